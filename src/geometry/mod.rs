@@ -1,0 +1,5 @@
+//! Geometry: rays, shapes, transforms, bounding boxes, and the render-ready scene.
+
+mod transform;
+
+pub use transform::Transform;

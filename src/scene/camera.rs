@@ -1,0 +1,87 @@
+use glam::DVec3;
+
+use super::Transform;
+
+/// A perspective camera in its final form: primary rays leave `location` along
+/// `direction + x * right + y * up` with screen coordinates x, y in [-1/2, 1/2].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    pub location: DVec3,
+    pub direction: DVec3,
+    pub right: DVec3,
+    pub up: DVec3,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        CameraSpec::default().resolve()
+    }
+}
+
+/// The camera items as a scene writes them. POV-Ray (3.5 and later) lets `look_at` and
+/// `angle` appear in any order among the vectors, so they are collected here and combined
+/// once in [`CameraSpec::resolve`]; transforms apply afterwards, in the order written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CameraSpec {
+    pub location: DVec3,
+    pub direction: DVec3,
+    pub right: DVec3,
+    pub up: DVec3,
+    pub sky: DVec3,
+    pub look_at: Option<DVec3>,
+    /// Horizontal field of view in degrees.
+    pub angle: Option<f64>,
+    pub transform: Transform,
+}
+
+impl Default for CameraSpec {
+    fn default() -> Self {
+        CameraSpec {
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            up: DVec3::Y,
+            sky: DVec3::Y,
+            look_at: None,
+            angle: None,
+            transform: Transform::IDENTITY,
+        }
+    }
+}
+
+impl CameraSpec {
+    pub fn resolve(&self) -> Camera {
+        let mut direction = self.direction;
+        let mut right = self.right;
+        let mut up = self.up;
+        if let Some(angle) = self.angle {
+            let half = (angle.to_radians() * 0.5).tan();
+            if half > 0.0 && half.is_finite() {
+                direction = direction.normalize_or(DVec3::Z) * (0.5 * right.length() / half);
+            }
+        }
+        if let Some(look_at) = self.look_at {
+            // Keep the lengths and the handedness the scene gave, change only the orientation.
+            let handedness = up.cross(direction).dot(right);
+            let (dl, ul, rl) = (direction.length(), up.length(), right.length());
+            let d = (look_at - self.location).normalize_or(DVec3::Z);
+            let mut r = self.sky.cross(d);
+            if r.length_squared() < 1e-20 {
+                // Looking straight along the sky vector: keep the old right vector's direction.
+                r = right;
+            }
+            let r = r.normalize_or(DVec3::X);
+            let u = d.cross(r);
+            direction = d * dl;
+            right = r * if handedness < 0.0 { -rl } else { rl };
+            up = u * ul;
+        }
+        let t = &self.transform;
+        Camera {
+            location: t.point(self.location),
+            direction: t.vector(direction),
+            right: t.vector(right),
+            up: t.vector(up),
+        }
+    }
+}

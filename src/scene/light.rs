@@ -1,0 +1,59 @@
+use glam::DVec3;
+
+/// The kinds of light POV-Ray has; each differs in where light comes from and how it
+/// falls off across directions.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind {
+    Point,
+    Spot {
+        point_at: DVec3,
+        /// Degrees.
+        radius: f64,
+        /// Degrees.
+        falloff: f64,
+        tightness: f64,
+    },
+    /// Shines along `point_at - location` everywhere.
+    Parallel { point_at: DVec3 },
+}
+
+/// `area_light <axis1>, <axis2>, size1, size2 ...`: a grid of point lights POV-Ray uses
+/// for soft shadows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AreaLight {
+    pub axis1: DVec3,
+    pub axis2: DVec3,
+    pub size1: u32,
+    pub size2: u32,
+    pub adaptive: Option<u32>,
+    pub jitter: bool,
+    pub circular: bool,
+    pub orient: bool,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Light {
+    pub kind: LightKind,
+    pub location: DVec3,
+    pub colour: DVec3,
+    pub area: Option<AreaLight>,
+    pub area_illumination: bool,
+    pub shadowless: bool,
+    pub fade_distance: f64,
+    pub fade_power: f64,
+}
+
+impl Light {
+    pub fn point(location: DVec3, colour: DVec3) -> Light {
+        Light {
+            kind: LightKind::Point,
+            location,
+            colour,
+            area: None,
+            area_illumination: false,
+            shadowless: false,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+        }
+    }
+}
