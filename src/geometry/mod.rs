@@ -1,5 +1,15 @@
-//! Geometry: rays, shapes, transforms, bounding boxes, and the render-ready scene.
+//! Geometry: rays, shapes, transforms, bounding boxes, the BVH, and the render-ready world.
 
+mod aabb;
+mod bvh;
+mod ray;
+mod shapes;
 mod transform;
+mod world;
 
+pub use aabb::Aabb;
+pub use bvh::Bvh;
+pub use ray::{Ray, offset_point, offset_scale};
+pub use shapes::ShapeKind;
 pub use transform::Transform;
+pub use world::{Hit, Primitive, SurfacePoint, World, WorldBuilder, flags};

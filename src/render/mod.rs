@@ -1,1 +1,174 @@
-//! render
+//! Rendering: the sampler, the integrator, lights, the film, and the one loop that owns
+//! tiles, threads and progress.
+
+pub mod film;
+pub mod integrator;
+pub mod lights;
+pub mod prepared;
+pub mod sampler;
+
+use std::ops::Range;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::{Duration, Instant};
+
+use glam::DVec3;
+use rayon::prelude::*;
+
+pub use film::{Film, PixelSum};
+pub use integrator::{Integrator, RayCounts};
+pub use prepared::PreparedScene;
+pub use sampler::PixelSampler;
+
+use crate::geometry::Ray;
+use crate::scene::Camera;
+
+const TILE: usize = 16;
+
+#[derive(Clone, Debug)]
+pub struct RenderOptions {
+    pub width: usize,
+    pub height: usize,
+    pub samples_per_pixel: u32,
+    pub seed: u64,
+    /// Which sample indices to render (default: all). Renders of disjoint ranges of the same
+    /// scene, size, sample count and seed sum to exactly the full render.
+    pub sample_range: Option<Range<u32>>,
+    /// Worker threads; `None` lets rayon choose.
+    pub threads: Option<usize>,
+    pub roulette: bool,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            width: 320,
+            height: 240,
+            samples_per_pixel: 16,
+            seed: 0,
+            sample_range: None,
+            threads: None,
+            roulette: true,
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct RenderStats {
+    pub wall: Duration,
+    pub samples: u64,
+    pub rays: RayCounts,
+}
+
+impl RenderStats {
+    pub fn rays_per_second(&self) -> f64 {
+        self.rays.total() as f64 / self.wall.as_secs_f64().max(1e-9)
+    }
+}
+
+/// Reports progress as a fraction done; called from worker threads.
+pub trait Progress: Sync {
+    fn advance(&self, done: u64, total: u64);
+}
+
+impl Progress for () {
+    fn advance(&self, _: u64, _: u64) {}
+}
+
+#[derive(Debug)]
+pub struct RenderError(pub String);
+
+impl std::fmt::Display for RenderError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+/// The primary ray through screen point (x, y) in [-1/2, 1/2]^2, y up.
+pub fn camera_ray(camera: &Camera, x: f64, y: f64) -> Ray {
+    let dir = camera.direction + camera.right * x + camera.up * y;
+    Ray::new(camera.location, dir.normalize_or(DVec3::Z))
+}
+
+/// Renders into a film. Each pixel's samples are taken in index order by one thread, and
+/// tiles are written back in a fixed order, so the result is the same for any thread count.
+pub fn render(
+    scene: &PreparedScene,
+    options: &RenderOptions,
+    progress: &dyn Progress,
+) -> Result<(Film, RenderStats), RenderError> {
+    let start = Instant::now();
+    let (w, h) = (options.width, options.height);
+    if w == 0 || h == 0 {
+        return Err(RenderError("the image size must be at least 1x1".into()));
+    }
+    let spp = options.samples_per_pixel.max(1);
+    let range = options.sample_range.clone().unwrap_or(0..spp);
+    if range.end > spp || range.start > range.end {
+        return Err(RenderError(format!(
+            "sample range {}..{} is outside 0..{spp}",
+            range.start, range.end
+        )));
+    }
+    let tiles: Vec<(usize, usize)> = (0..h.div_ceil(TILE))
+        .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
+        .collect();
+    let total = tiles.len() as u64;
+    let done = AtomicU64::new(0);
+    let mut integrator = Integrator::new(scene);
+    integrator.roulette = options.roulette;
+    let render_tile = |&(x0, y0): &(usize, usize)| {
+        let mut sampler = PixelSampler::new(spp);
+        let mut counts = RayCounts::default();
+        let mut sums = Vec::with_capacity(TILE * TILE);
+        let mut non_finite = Vec::new();
+        for y in y0..(y0 + TILE).min(h) {
+            for x in x0..(x0 + TILE).min(w) {
+                let mut sum = PixelSum::default();
+                for index in range.clone() {
+                    sampler.start(x as u32, y as u32, index, options.seed);
+                    let (u, v) = sampler.get_2d();
+                    let sx = (x as f64 + u) / w as f64 - 0.5;
+                    let sy = 0.5 - (y as f64 + v) / h as f64;
+                    let ray = camera_ray(&scene.camera, sx, sy);
+                    let l = integrator.radiance(&ray, &mut sampler, &mut counts);
+                    if l.is_finite() {
+                        sum.add(l.to_array());
+                    } else {
+                        sum.add([0.0; 3]);
+                        non_finite.push((x as u32, y as u32));
+                    }
+                }
+                sums.push(sum);
+            }
+        }
+        let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+        progress.advance(n, total);
+        (sums, counts, non_finite)
+    };
+    let results: Vec<_> = match options.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build()
+            .map_err(|e| RenderError(format!("cannot start {n} threads: {e}")))?
+            .install(|| tiles.par_iter().map(render_tile).collect()),
+        None => tiles.par_iter().map(render_tile).collect(),
+    };
+    let mut film = Film::new(w, h);
+    let mut rays = RayCounts::default();
+    for (&(x0, y0), (sums, counts, non_finite)) in tiles.iter().zip(results) {
+        let tw = (x0 + TILE).min(w) - x0;
+        for (i, s) in sums.into_iter().enumerate() {
+            film.pixels[(y0 + i / tw) * w + x0 + i % tw] = s;
+        }
+        rays.add(&counts);
+        film.non_finite.extend(non_finite);
+    }
+    let stats = RenderStats {
+        wall: start.elapsed(),
+        samples: (w * h) as u64 * (range.end - range.start) as u64,
+        rays,
+    };
+    Ok((film, stats))
+}

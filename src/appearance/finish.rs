@@ -1,0 +1,129 @@
+//! POV-Ray's finish formulas as pure functions, so each can be checked against
+//! hand-computed values. `n` is the normal facing the viewer, `l` the unit vector to the
+//! light, `d` the incoming ray direction (unit).
+
+use glam::DVec3;
+
+/// Diffuse: `diffuse * (N.L)^brilliance`, no 1/pi, zero when N.L < 1e-10.
+pub fn diffuse_factor(diffuse: f64, brilliance: f64, n_dot_l: f64) -> f64 {
+    if n_dot_l < 1e-10 || diffuse == 0.0 {
+        return 0.0;
+    }
+    let c = if brilliance == 1.0 {
+        n_dot_l
+    } else {
+        n_dot_l.powf(brilliance)
+    };
+    diffuse * c
+}
+
+/// Phong: `phong * (R.L)^phong_size` with R the mirror direction of the ray.
+pub fn phong_factor(phong: f64, phong_size: f64, n: DVec3, d: DVec3, l: DVec3) -> f64 {
+    if phong == 0.0 {
+        return 0.0;
+    }
+    let r = d - 2.0 * d.dot(n) * n;
+    let c = r.dot(l);
+    if c > 0.0 {
+        phong * c.powf(phong_size)
+    } else {
+        0.0
+    }
+}
+
+/// Specular (Blinn): H = (V + L)/2, `specular * ((H.N)/|H|)^(1/roughness)`.
+pub fn specular_factor(specular: f64, roughness: f64, n: DVec3, d: DVec3, l: DVec3) -> f64 {
+    if specular == 0.0 {
+        return 0.0;
+    }
+    let h = (l - d) * 0.5;
+    let len = h.length();
+    if len == 0.0 {
+        return 0.0;
+    }
+    let c = h.dot(n) / len;
+    if c > 0.0 {
+        specular * c.powf(1.0 / roughness)
+    } else {
+        0.0
+    }
+}
+
+/// The colour a highlight takes with `metallic m`: the light colour tinted towards the
+/// pigment, less so at grazing angles (POV-Ray's empirical Fresnel-like curve).
+pub fn metallic_tint(metallic: f64, pigment: DVec3, n_dot_l: f64) -> DVec3 {
+    if metallic == 0.0 {
+        return DVec3::ONE;
+    }
+    let x = n_dot_l.clamp(-1.0, 1.0).acos() / std::f64::consts::FRAC_PI_2;
+    let f = (0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903).clamp(0.0, 1.0);
+    DVec3::ONE + metallic * (1.0 - f) * (pigment - DVec3::ONE)
+}
+
+/// Reflectivity for `reflection { min, max falloff p }` (no fresnel): blends min and max by
+/// (1 - cos)^p with cos = -D.N.
+pub fn reflectivity(min: DVec3, max: DVec3, falloff: f64, cos_incidence: f64) -> DVec3 {
+    if min == max {
+        return max;
+    }
+    let frac = (1.0 - cos_incidence.clamp(0.0, 1.0)).powf(falloff);
+    frac * max + (1.0 - frac) * min
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() < 1e-12
+    }
+
+    #[test]
+    fn diffuse_by_hand() {
+        // 0.6 * 0.5^1 and 0.6 * 0.5^2; nothing below the horizon.
+        assert!(close(diffuse_factor(0.6, 1.0, 0.5), 0.3));
+        assert!(close(diffuse_factor(0.6, 2.0, 0.5), 0.15));
+        assert_eq!(diffuse_factor(0.6, 1.0, 1e-11), 0.0);
+    }
+
+    #[test]
+    fn phong_by_hand() {
+        // Ray straight down onto an upward normal reflects straight up.
+        let n = DVec3::Y;
+        let d = -DVec3::Y;
+        assert!(close(phong_factor(0.8, 40.0, n, d, DVec3::Y), 0.8));
+        // Light at 60 degrees from the reflected ray: 0.8 * 0.5^2.
+        let l = DVec3::new(3f64.sqrt() / 2.0, 0.5, 0.0);
+        assert!(close(phong_factor(0.8, 2.0, n, d, l), 0.2));
+        assert_eq!(phong_factor(0.8, 2.0, n, d, -DVec3::Y), 0.0);
+    }
+
+    #[test]
+    fn specular_by_hand() {
+        // V = L = N: H.N/|H| = 1, so the full value.
+        let n = DVec3::Y;
+        assert!(close(specular_factor(0.5, 0.05, n, -DVec3::Y, DVec3::Y), 0.5));
+        // V along N, L at 90 degrees: the half vector is at 45 degrees; cos = 1/sqrt 2;
+        // exponent 1/roughness = 2 gives 0.5 * 0.5.
+        let s = specular_factor(0.5, 0.5, n, -DVec3::Y, DVec3::X);
+        assert!(close(s, 0.25), "{s}");
+    }
+
+    #[test]
+    fn metallic_tint_by_hand() {
+        // Head-on (x = 0): F = 0.014567225/1.2544 - 0.011612903 = 0.0000000... about 0;
+        // the highlight takes nearly the full pigment colour.
+        let c = DVec3::new(1.0, 0.5, 0.0);
+        let t = metallic_tint(1.0, c, 1.0);
+        let f = (0.014567225 / (1.12f64 * 1.12) - 0.011612903).clamp(0.0, 1.0);
+        assert!(close(t.y, 1.0 + (1.0 - f) * -0.5));
+        assert_eq!(metallic_tint(0.0, c, 1.0), DVec3::ONE);
+    }
+
+    #[test]
+    fn reflection_falloff_by_hand() {
+        let r = reflectivity(DVec3::splat(0.1), DVec3::splat(0.9), 2.0, 0.5);
+        // frac = 0.5^2 = 0.25: 0.25*0.9 + 0.75*0.1 = 0.3.
+        assert!(close(r.x, 0.3));
+    }
+}

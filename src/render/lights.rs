@@ -1,0 +1,228 @@
+//! Lights prepared for sampling. In `pov` mode an area light's estimator has exactly the
+//! expectation of POV-Ray's grid: a grid point is drawn with the weight POV-Ray's recursive
+//! corner averaging gives it, so the mean visibility equals POV-Ray's shadow fraction.
+
+use glam::DVec3;
+
+use crate::scene::{Light, LightKind};
+
+#[derive(Clone, Debug)]
+pub struct PreparedLight {
+    pub kind: LightKind,
+    pub location: DVec3,
+    pub colour: DVec3,
+    pub shadowless: bool,
+    pub fade_distance: f64,
+    pub fade_power: f64,
+    pub area: Option<PreparedArea>,
+}
+
+#[derive(Clone, Debug)]
+pub struct PreparedArea {
+    pub axis1: DVec3,
+    pub axis2: DVec3,
+    pub size1: u32,
+    pub size2: u32,
+    pub jitter: bool,
+    pub circular: bool,
+    pub orient: bool,
+    /// Cumulative grid weights along each axis; the last entry is 1.
+    cdf1: Vec<f64>,
+    cdf2: Vec<f64>,
+}
+
+impl PreparedLight {
+    pub fn new(light: &Light) -> PreparedLight {
+        let area = light.area.map(|a| PreparedArea {
+            axis1: a.axis1,
+            axis2: a.axis2,
+            size1: a.size1.max(1),
+            size2: a.size2.max(1),
+            jitter: a.jitter,
+            circular: a.circular,
+            orient: a.orient,
+            cdf1: cumulative(&grid_weights(a.size1.max(1))),
+            cdf2: cumulative(&grid_weights(a.size2.max(1))),
+        });
+        PreparedLight {
+            kind: light.kind,
+            location: light.location,
+            colour: light.colour,
+            shadowless: light.shadowless,
+            fade_distance: light.fade_distance,
+            fade_power: light.fade_power,
+            area,
+        }
+    }
+
+    /// Colour arriving from a light at `distance`, before shadows: fade and spotlight cone.
+    pub fn attenuation(&self, to_light: DVec3, distance: f64) -> f64 {
+        let mut a = 1.0;
+        if self.fade_power > 0.0 && self.fade_distance > 0.0 {
+            a *= 2.0 / (1.0 + (distance / self.fade_distance).powf(self.fade_power));
+        }
+        if let LightKind::Spot {
+            point_at,
+            radius,
+            falloff,
+            tightness,
+        } = self.kind
+        {
+            let axis = (point_at - self.location).normalize_or(DVec3::Z);
+            let cos = (-to_light).dot(axis);
+            let cos_radius = radius.to_radians().cos();
+            let cos_falloff = falloff.to_radians().cos();
+            if cos < cos_falloff {
+                return 0.0;
+            }
+            if tightness > 0.0 {
+                a *= cos.max(0.0).powf(tightness);
+            }
+            if cos < cos_radius {
+                let t = ((cos - cos_falloff) / (cos_radius - cos_falloff)).clamp(0.0, 1.0);
+                a *= t * t * (3.0 - 2.0 * t);
+            }
+        }
+        a
+    }
+}
+
+impl PreparedArea {
+    /// A point of the light to shadow-test, drawn with POV-Ray's grid weights from the
+    /// stratified pair (s1, s2). Jitter reuses where s fell inside its grid cell's weight,
+    /// which keeps it uniform and stratified. `towards` is the direction from the shaded
+    /// point to the light centre (for `orient`).
+    pub fn sample_point(&self, centre: DVec3, s1: f64, s2: f64, towards: DVec3) -> DVec3 {
+        let (i1, r1) = pick(&self.cdf1, s1);
+        let (i2, r2) = pick(&self.cdf2, s2);
+        let mut u = grid_coordinate(i1, self.size1, self.jitter.then_some(r1));
+        let mut v = grid_coordinate(i2, self.size2, self.jitter.then_some(r2));
+        let (mut a1, mut a2) = (self.axis1, self.axis2);
+        if self.circular {
+            u += 0.001;
+            v += 0.001;
+            let len = (u * u + v * v).sqrt();
+            let s = u.abs().max(v.abs()) / len;
+            u *= s;
+            v *= s;
+        }
+        if self.orient {
+            let d = towards.normalize_or(DVec3::Z);
+            let z = if (d.z.abs() - 1.0).abs() < 0.01 {
+                DVec3::Y
+            } else {
+                DVec3::Z
+            };
+            let len = a1.length();
+            a1 = d.cross(z).normalize_or(DVec3::X) * len;
+            a2 = d.cross(a1).normalize_or(DVec3::Y) * len;
+        }
+        centre + a1 * u + a2 * v
+    }
+}
+
+/// Position along one axis in [-1/2, 1/2]: grid index `i` of `n`, plus jitter of up to half
+/// a cell either way (`r` uniform in [0, 1)). A single row has no offset.
+fn grid_coordinate(i: usize, n: u32, jitter: Option<f64>) -> f64 {
+    if n <= 1 {
+        return 0.0;
+    }
+    let j = jitter.map_or(0.0, |r| r - 0.5);
+    (i as f64 + j) / (n - 1) as f64 - 0.5
+}
+
+/// Index drawn by `s` from a cumulative table, and where `s` fell inside that entry (0..1).
+fn pick(cdf: &[f64], s: f64) -> (usize, f64) {
+    let i = cdf.partition_point(|&c| c <= s).min(cdf.len() - 1);
+    let lo = if i == 0 { 0.0 } else { cdf[i - 1] };
+    let w = cdf[i] - lo;
+    let r = if w > 0.0 {
+        ((s - lo) / w).clamp(0.0, 1.0 - f64::EPSILON)
+    } else {
+        0.5
+    };
+    (i, r)
+}
+
+fn cumulative(w: &[f64]) -> Vec<f64> {
+    let mut acc = 0.0;
+    let mut out: Vec<f64> = w
+        .iter()
+        .map(|x| {
+            acc += x;
+            acc
+        })
+        .collect();
+    if let Some(last) = out.last_mut() {
+        *last = 1.0;
+    }
+    out
+}
+
+/// The weight of each grid index along one axis of POV-Ray's non-adaptive area light.
+/// POV-Ray averages a rectangle's four corners, or, when it spans more than one cell, the
+/// values of the four halves split at floor/ceil of the midpoint. That recursion is
+/// separable, so one axis is enough: [lo, hi] splits into [lo, floor(m)] and [ceil(m), hi],
+/// each with half the weight, until it spans at most one cell.
+pub fn grid_weights(n: u32) -> Vec<f64> {
+    let n = n.max(1) as usize;
+    let mut w = vec![0.0; n];
+    fn split(lo: usize, hi: usize, weight: f64, w: &mut [f64]) {
+        if hi - lo <= 1 {
+            w[lo] += weight * 0.5;
+            w[hi] += weight * 0.5;
+        } else {
+            let m = (lo + hi) as f64 * 0.5;
+            split(lo, m.floor() as usize, weight * 0.5, w);
+            split(m.ceil() as usize, hi, weight * 0.5, w);
+        }
+    }
+    split(0, n - 1, 1.0, &mut w);
+    w
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grid_weights_match_povray() {
+        let cases: [(u32, &[f64]); 7] = [
+            (1, &[1.0]),
+            (2, &[0.5, 0.5]),
+            (3, &[0.25, 0.5, 0.25]),
+            (4, &[0.25; 4]),
+            (5, &[0.125, 0.25, 0.25, 0.25, 0.125]),
+            (6, &[0.125, 0.25, 0.125, 0.125, 0.25, 0.125]),
+            (7, &[0.125, 0.125, 0.125, 0.25, 0.125, 0.125, 0.125]),
+        ];
+        for (n, expected) in cases {
+            assert_eq!(grid_weights(n), expected, "n = {n}");
+        }
+        for n in 1..200 {
+            let s: f64 = grid_weights(n).iter().sum();
+            assert!((s - 1.0).abs() < 1e-12, "n = {n}");
+        }
+    }
+
+    #[test]
+    fn picking_follows_the_weights() {
+        let cdf = cumulative(&grid_weights(3));
+        assert_eq!(pick(&cdf, 0.0).0, 0);
+        assert_eq!(pick(&cdf, 0.2499).0, 0);
+        assert_eq!(pick(&cdf, 0.25).0, 1);
+        assert_eq!(pick(&cdf, 0.7499).0, 1);
+        assert_eq!(pick(&cdf, 0.9999).0, 2);
+        let (_, r) = pick(&cdf, 0.5);
+        assert!((r - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn grid_points_span_the_axes() {
+        assert_eq!(grid_coordinate(0, 5, None), -0.5);
+        assert_eq!(grid_coordinate(4, 5, None), 0.5);
+        assert_eq!(grid_coordinate(2, 5, None), 0.0);
+        assert_eq!(grid_coordinate(0, 1, Some(0.9)), 0.0);
+        assert_eq!(grid_coordinate(0, 5, Some(0.0)), -0.625);
+    }
+}
