@@ -51,10 +51,7 @@ pub fn summary(scene: &scene::Scene) -> String {
     fn count(objects: &[scene::Object]) -> usize {
         objects
             .iter()
-            .map(|o| match &o.shape {
-                scene::Shape::Union(children) => 1 + count(children),
-                _ => 1,
-            })
+            .map(|o| 1 + o.shape.children().map_or(0, count))
             .sum()
     }
     let area = scene.lights.iter().filter(|l| l.area.is_some()).count();

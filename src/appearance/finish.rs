@@ -102,7 +102,10 @@ mod tests {
     fn specular_by_hand() {
         // V = L = N: H.N/|H| = 1, so the full value.
         let n = DVec3::Y;
-        assert!(close(specular_factor(0.5, 0.05, n, -DVec3::Y, DVec3::Y), 0.5));
+        assert!(close(
+            specular_factor(0.5, 0.05, n, -DVec3::Y, DVec3::Y),
+            0.5
+        ));
         // V along N, L at 90 degrees: the half vector is at 45 degrees; cos = 1/sqrt 2;
         // exponent 1/roughness = 2 gives 0.5 * 0.5.
         let s = specular_factor(0.5, 0.5, n, -DVec3::Y, DVec3::X);

@@ -71,9 +71,7 @@ impl Bvh {
             self.make_leaf(node_index, items);
             return node_index;
         }
-        let centres = items
-            .iter()
-            .fold(Aabb::EMPTY, |a, it| a.grow(it.centre));
+        let centres = items.iter().fold(Aabb::EMPTY, |a, it| a.grow(it.centre));
         let extent = centres.max - centres.min;
         let axis = if extent.x >= extent.y && extent.x >= extent.z {
             0
@@ -154,7 +152,8 @@ impl Bvh {
             if n == 0 || right_count[i + 1] == 0 {
                 continue;
             }
-            let cost = acc.surface_area() * n as f64 + right_area[i + 1] * right_count[i + 1] as f64;
+            let cost =
+                acc.surface_area() * n as f64 + right_area[i + 1] * right_count[i + 1] as f64;
             if cost < best.0 {
                 best = (cost, i);
             }
@@ -252,16 +251,24 @@ mod tests {
             .collect();
         let bvh = Bvh::build(&bounds);
         let mut seen = vec![false; bounds.len()];
-        bvh.traverse(&Ray::new(DVec3::new(-1.0, 0.0, 0.0), DVec3::X), f64::INFINITY, |i, t| {
-            seen[i as usize] = true;
-            Some(t)
-        });
+        bvh.traverse(
+            &Ray::new(DVec3::new(-1.0, 0.0, 0.0), DVec3::X),
+            f64::INFINITY,
+            |i, t| {
+                seen[i as usize] = true;
+                Some(t)
+            },
+        );
         assert!(seen.iter().all(|&s| s));
         let mut count = 0;
-        bvh.traverse(&Ray::new(DVec3::new(-1.0, 2.0, 0.0), DVec3::X), f64::INFINITY, |_, t| {
-            count += 1;
-            Some(t)
-        });
+        bvh.traverse(
+            &Ray::new(DVec3::new(-1.0, 2.0, 0.0), DVec3::X),
+            f64::INFINITY,
+            |_, t| {
+                count += 1;
+                Some(t)
+            },
+        );
         assert_eq!(count, 0);
     }
 
@@ -270,10 +277,14 @@ mod tests {
         let bounds = vec![Aabb::new(DVec3::ZERO, DVec3::ONE); 100_000];
         let bvh = Bvh::build(&bounds);
         let mut count = 0;
-        bvh.traverse(&Ray::new(DVec3::splat(-1.0), DVec3::ONE), f64::INFINITY, |_, t| {
-            count += 1;
-            Some(t)
-        });
+        bvh.traverse(
+            &Ray::new(DVec3::splat(-1.0), DVec3::ONE),
+            f64::INFINITY,
+            |_, t| {
+                count += 1;
+                Some(t)
+            },
+        );
         assert_eq!(count, 100_000);
     }
 }

@@ -2,6 +2,7 @@
 
 mod aabb;
 mod bvh;
+mod roots;
 mod ray;
 mod shapes;
 mod transform;
@@ -10,6 +11,6 @@ mod world;
 pub use aabb::Aabb;
 pub use bvh::Bvh;
 pub use ray::{Ray, offset_point, offset_scale};
-pub use shapes::ShapeKind;
+pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use transform::Transform;
-pub use world::{Hit, Primitive, SurfacePoint, World, WorldBuilder, flags};
+pub use world::{CsgOp, Hit, Item, Primitive, SurfacePoint, World, WorldBuilder, flags};

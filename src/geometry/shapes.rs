@@ -1,78 +1,187 @@
-//! The render-ready shapes: one enum, intersected in the shape's own space.
+//! The render-ready shapes: one enum, intersected in the shape's own space. Shapes whose
+//! data would make every enum value large (quadrics, triangles, polygons) keep it in side
+//! tables and hold an index, so the common spheres and boxes stay compact in the cache.
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
+use super::roots::{Roots, quadratic, roots_in};
 use super::{Aabb, Ray};
 
-/// A closed set of shapes. Transformed instances keep their shape here in object space and
-/// their transform beside them in [`super::Primitive`]; spheres and boxes that are only
-/// translated and uniformly scaled are baked into world space when the scene is built.
+/// Data too large to sit inside [`ShapeKind`].
+#[derive(Clone, Debug, Default)]
+pub struct ShapeTables {
+    /// POV-Ray's order: A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J.
+    pub quadrics: Vec<[f64; 10]>,
+    pub triangles: Vec<TriangleData>,
+    pub polygons: Vec<PolygonData>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriangleData {
+    pub p0: DVec3,
+    pub e1: DVec3,
+    pub e2: DVec3,
+    /// Vertex normals of a smooth triangle (interpolated for shading).
+    pub normals: Option<[DVec3; 3]>,
+}
+
+/// A polygon in the plane z = 0 of its own frame (the primitive's transform places it),
+/// filled by the even-odd rule so sub-polygons make holes, as in POV-Ray.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PolygonData {
+    pub points: Vec<DVec2>,
+    /// Closed loops as ranges into `points` (each loop's last point joins its first).
+    pub loops: Vec<(usize, usize)>,
+    pub bounds: (DVec2, DVec2),
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ShapeKind {
-    Sphere { center: DVec3, radius: f64 },
+    Sphere {
+        center: DVec3,
+        radius: f64,
+    },
     /// Points with `normal . p = distance`.
-    Plane { normal: DVec3, distance: f64 },
-    Box { min: DVec3, max: DVec3 },
+    Plane {
+        normal: DVec3,
+        distance: f64,
+    },
+    Box {
+        min: DVec3,
+        max: DVec3,
+    },
+    /// Along z from 0 to 1 with radius `r0` at z = 0 and `r1` at z = 1 (a cylinder when
+    /// equal); the transform places, turns and stretches it, without scaling x and y.
+    Cone {
+        r0: f64,
+        r1: f64,
+        open: bool,
+    },
+    /// In the plane z = 0, radius `radius` with a hole of `hole`.
+    Disc {
+        radius: f64,
+        hole: f64,
+    },
+    /// Around the y axis: major radius in the xz plane, minor radius of the tube.
+    Torus {
+        major: f64,
+        minor: f64,
+    },
+    Quadric(u32),
+    Triangle(u32),
+    Polygon(u32),
 }
 
 impl ShapeKind {
     /// Object-space bounds; `None` for unbounded shapes.
-    pub fn bounds(&self) -> Option<Aabb> {
+    pub fn bounds(&self, tables: &ShapeTables) -> Option<Aabb> {
         match *self {
             ShapeKind::Sphere { center, radius } => Some(Aabb::new(
                 center - DVec3::splat(radius),
                 center + DVec3::splat(radius),
             )),
-            ShapeKind::Plane { .. } => None,
+            ShapeKind::Plane { .. } | ShapeKind::Quadric(_) => None,
             ShapeKind::Box { min, max } => Some(Aabb::new(min, max)),
+            ShapeKind::Cone { r0, r1, .. } => {
+                let r = r0.abs().max(r1.abs());
+                Some(Aabb::new(DVec3::new(-r, -r, 0.0), DVec3::new(r, r, 1.0)))
+            }
+            ShapeKind::Disc { radius, .. } => Some(Aabb::new(
+                DVec3::new(-radius, -radius, 0.0),
+                DVec3::new(radius, radius, 0.0),
+            )),
+            ShapeKind::Torus { major, minor } => {
+                let r = major.abs() + minor.abs();
+                Some(Aabb::new(
+                    DVec3::new(-r, -minor.abs(), -r),
+                    DVec3::new(r, minor.abs(), r),
+                ))
+            }
+            ShapeKind::Triangle(i) => {
+                let t = &tables.triangles[i as usize];
+                Some(Aabb::new(t.p0, t.p0 + t.e1).grow(t.p0 + t.e2))
+            }
+            ShapeKind::Polygon(i) => {
+                let (lo, hi) = tables.polygons[i as usize].bounds;
+                Some(Aabb::new(lo.extend(0.0), hi.extend(0.0)))
+            }
         }
     }
 
     /// Nearest hit distance in (0, t_max), in units of the ray's direction (which need not
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
-    pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<f64> {
+    pub fn intersect(&self, ray: &Ray, t_max: f64, tables: &ShapeTables) -> Option<f64> {
+        let hits = self.all_hits(ray, tables);
+        hits.as_slice()
+            .iter()
+            .copied()
+            .find(|&t| t > 0.0 && t < t_max)
+    }
+
+    /// Every crossing of the surface along the whole line, sorted; CSG needs them all.
+    pub fn all_hits(&self, ray: &Ray, tables: &ShapeTables) -> Roots {
         match *self {
-            ShapeKind::Sphere { center, radius } => {
-                let [t0, t1] = sphere_roots(ray, center, radius)?;
-                if t0 > 0.0 && t0 < t_max {
-                    Some(t0)
-                } else if t1 > 0.0 && t1 < t_max {
-                    Some(t1)
-                } else {
-                    None
-                }
-            }
+            ShapeKind::Sphere { center, radius } => sphere_roots(ray, center, radius),
             ShapeKind::Plane { normal, distance } => {
+                let mut r = Roots::default();
                 let denom = normal.dot(ray.direction);
-                if denom == 0.0 {
-                    return None;
+                if denom != 0.0 {
+                    r.push((distance - normal.dot(ray.origin)) / denom);
                 }
-                let t = (distance - normal.dot(ray.origin)) / denom;
-                (t > 0.0 && t < t_max).then_some(t)
+                r
             }
             ShapeKind::Box { min, max } => {
+                let mut r = Roots::default();
                 let inv = ray.direction.recip();
                 let t1 = (min - ray.origin) * inv;
                 let t2 = (max - ray.origin) * inv;
                 let t_near = t1.min(t2).max_element();
                 let t_far = t1.max(t2).min_element();
-                if t_near > t_far {
-                    return None;
+                if t_near <= t_far {
+                    r.push(t_near);
+                    r.push(t_far);
                 }
-                if t_near > 0.0 && t_near < t_max {
-                    Some(t_near)
-                } else if t_far > 0.0 && t_far < t_max {
-                    Some(t_far)
-                } else {
-                    None
+                r
+            }
+            ShapeKind::Cone { r0, r1, open } => cone_hits(ray, r0, r1, open),
+            ShapeKind::Disc { radius, hole } => {
+                let mut r = Roots::default();
+                if ray.direction.z != 0.0 {
+                    let t = -ray.origin.z / ray.direction.z;
+                    let p = ray.at(t);
+                    let d2 = p.x * p.x + p.y * p.y;
+                    if d2 <= radius * radius && d2 >= hole * hole {
+                        r.push(t);
+                    }
                 }
+                r
+            }
+            ShapeKind::Torus { major, minor } => torus_hits(ray, major, minor),
+            ShapeKind::Quadric(i) => quadric_hits(ray, &tables.quadrics[i as usize]),
+            ShapeKind::Triangle(i) => {
+                let mut r = Roots::default();
+                if let Some((t, _, _)) = triangle_hit(ray, &tables.triangles[i as usize]) {
+                    r.push(t);
+                }
+                r
+            }
+            ShapeKind::Polygon(i) => {
+                let mut r = Roots::default();
+                if ray.direction.z != 0.0 {
+                    let t = -ray.origin.z / ray.direction.z;
+                    let p = ray.at(t);
+                    if polygon_contains(&tables.polygons[i as usize], DVec2::new(p.x, p.y)) {
+                        r.push(t);
+                    }
+                }
+                r
             }
         }
     }
 
     /// Outward geometric normal at a point on the surface, not normalised.
-    pub fn normal(&self, p: DVec3) -> DVec3 {
+    pub fn normal(&self, p: DVec3, tables: &ShapeTables) -> DVec3 {
         match *self {
             ShapeKind::Sphere { center, .. } => p - center,
             ShapeKind::Plane { normal, .. } => normal,
@@ -90,15 +199,88 @@ impl ShapeKind {
                     DVec3::new(0.0, 0.0, q.z.signum())
                 }
             }
+            ShapeKind::Cone { r0, r1, open } => {
+                let radial = (p.x * p.x + p.y * p.y).sqrt();
+                let r = r0 + (r1 - r0) * p.z;
+                // Caps are flat: decide by which surface the point is nearer to.
+                if !open {
+                    let side = (radial - r.abs()).abs();
+                    if p.z.abs() < side * 0.5 || (p.z <= 1e-9 && radial < r0.abs()) {
+                        return -DVec3::Z;
+                    }
+                    if (p.z - 1.0).abs() < side * 0.5 || (p.z >= 1.0 - 1e-9 && radial < r1.abs())
+                    {
+                        return DVec3::Z;
+                    }
+                }
+                DVec3::new(p.x, p.y, -r * (r1 - r0))
+            }
+            ShapeKind::Disc { .. } | ShapeKind::Polygon(_) => DVec3::Z,
+            ShapeKind::Torus { major, .. } => {
+                let radial = DVec3::new(p.x, 0.0, p.z);
+                let len = radial.length();
+                let ring = if len > 0.0 {
+                    radial * (major / len)
+                } else {
+                    DVec3::ZERO
+                };
+                p - ring
+            }
+            ShapeKind::Quadric(i) => {
+                let [a, b, c, d, e, f, g, h, ii, _] = tables.quadrics[i as usize];
+                DVec3::new(
+                    2.0 * a * p.x + d * p.y + e * p.z + g,
+                    2.0 * b * p.y + d * p.x + f * p.z + h,
+                    2.0 * c * p.z + e * p.x + f * p.y + ii,
+                )
+            }
+            ShapeKind::Triangle(i) => {
+                let t = &tables.triangles[i as usize];
+                t.e1.cross(t.e2)
+            }
         }
     }
 
-    /// Whether a point is inside the solid (POV-Ray's notion, used by CSG and interiors).
-    pub fn inside(&self, p: DVec3) -> bool {
+    /// The normal used for shading; differs from the geometric one on smooth triangles.
+    pub fn shading_normal(&self, p: DVec3, tables: &ShapeTables) -> DVec3 {
+        if let ShapeKind::Triangle(i) = *self {
+            let t = &tables.triangles[i as usize];
+            if let Some(n) = t.normals {
+                let (u, v) = barycentric(t, p);
+                let s = n[0] * (1.0 - u - v) + n[1] * u + n[2] * v;
+                if s.length_squared() > 0.0 {
+                    return s;
+                }
+            }
+        }
+        self.normal(p, tables)
+    }
+
+    /// Whether a point is inside the solid, POV-Ray's notion used by CSG. Points on the
+    /// surface count as outside, the same way every time, so that coincident CSG faces
+    /// resolve deterministically.
+    pub fn inside(&self, p: DVec3, tables: &ShapeTables) -> bool {
         match *self {
-            ShapeKind::Sphere { center, radius } => (p - center).length_squared() < radius * radius,
-            ShapeKind::Plane { normal, distance } => normal.dot(p) < distance,
-            ShapeKind::Box { min, max } => p.cmpgt(min).all() && p.cmplt(max).all(),
+            ShapeKind::Sphere { center, radius } => {
+                (p - center).length_squared() < radius * radius * (1.0 - 1e-12)
+            }
+            ShapeKind::Plane { normal, distance } => {
+                normal.dot(p) < distance - 1e-12 * (distance.abs() + p.abs().max_element())
+            }
+            ShapeKind::Box { min, max } => {
+                let eps = 1e-12 * (min.abs().max(max.abs()).max_element() + 1.0);
+                p.cmpgt(min + eps).all() && p.cmplt(max - eps).all()
+            }
+            ShapeKind::Cone { r0, r1, .. } => {
+                let r = r0 + (r1 - r0) * p.z;
+                p.z > 0.0 && p.z < 1.0 && p.x * p.x + p.y * p.y < r * r * (1.0 - 1e-12)
+            }
+            ShapeKind::Torus { major, minor } => {
+                let q = DVec2::new(DVec2::new(p.x, p.z).length() - major, p.y);
+                q.length_squared() < minor * minor * (1.0 - 1e-12)
+            }
+            ShapeKind::Quadric(i) => quadric_value(&tables.quadrics[i as usize], p) < 0.0,
+            ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }
 }
@@ -107,29 +289,183 @@ impl ShapeKind {
 /// cancellation: the discriminant from the perpendicular distance to the centre, and the
 /// second root from the product of roots (q = -(b + sign(b) sqrt(disc)), t0 = q/a, t1 = c/q).
 #[inline]
-fn sphere_roots(ray: &Ray, center: DVec3, radius: f64) -> Option<[f64; 2]> {
+fn sphere_roots(ray: &Ray, center: DVec3, radius: f64) -> Roots {
+    let mut r = Roots::default();
     let d = ray.direction;
     let oc = ray.origin - center;
     let a = d.dot(d);
+    if a == 0.0 {
+        return r;
+    }
     let b = oc.dot(d); // half of the usual b
     let c = oc.dot(oc) - radius * radius;
     let perp = oc - d * (b / a);
     let disc = a * (radius * radius - perp.dot(perp));
-    if disc < 0.0 || a == 0.0 {
-        return None;
+    if disc < 0.0 {
+        return r;
     }
     let q = -(b + b.signum() * disc.sqrt());
     if q == 0.0 {
-        // Origin on the sphere and ray tangent; both roots are 0.
-        return Some([0.0, 0.0]);
+        r.push(0.0);
+        r.push(0.0);
+        return r;
     }
     let (t0, t1) = (q / a, c / q);
-    Some(if t0 <= t1 { [t0, t1] } else { [t1, t0] })
+    r.push(t0.min(t1));
+    r.push(t0.max(t1));
+    r
+}
+
+fn cone_hits(ray: &Ray, r0: f64, r1: f64, open: bool) -> Roots {
+    let (o, d) = (ray.origin, ray.direction);
+    let k = r1 - r0;
+    // x^2 + y^2 - (r0 + k z)^2 = 0
+    let rz_o = r0 + k * o.z;
+    let a = d.x * d.x + d.y * d.y - k * k * d.z * d.z;
+    let b = 2.0 * (o.x * d.x + o.y * d.y - rz_o * k * d.z);
+    let c = o.x * o.x + o.y * o.y - rz_o * rz_o;
+    let mut out = Roots::default();
+    for &t in quadratic(a, b, c).as_slice() {
+        let z = o.z + t * d.z;
+        if (0.0..=1.0).contains(&z) {
+            out.push(t);
+        }
+    }
+    if !open && d.z != 0.0 {
+        for (z, r) in [(0.0, r0), (1.0, r1)] {
+            let t = (z - o.z) / d.z;
+            let p = ray.at(t);
+            if p.x * p.x + p.y * p.y <= r * r {
+                out.push(t);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+fn torus_hits(ray: &Ray, major: f64, minor: f64) -> Roots {
+    // Start the polynomial near the torus, so its coefficients do not cancel for far rays.
+    let d_len = ray.direction.length();
+    let dir = ray.direction / d_len;
+    let bound = major.abs() + minor.abs();
+    let shift = (-ray.origin.dot(dir)).max(0.0) - bound;
+    let shift = shift.max(0.0);
+    let o = ray.origin + dir * shift;
+    let (r2, s2) = (major * major, minor * minor);
+    // (|p|^2 + R^2 - r^2)^2 = 4 R^2 (x^2 + z^2) with p = o + t dir, |dir| = 1.
+    let od = o.dot(dir);
+    let oo = o.dot(o);
+    let k = oo + r2 - s2;
+    let c4 = 1.0;
+    let c3 = 4.0 * od;
+    let c2 = 2.0 * k + 4.0 * od * od - 4.0 * r2 * (dir.x * dir.x + dir.z * dir.z);
+    let c1 = 4.0 * k * od - 8.0 * r2 * (o.x * dir.x + o.z * dir.z);
+    let c0 = k * k - 4.0 * r2 * (o.x * o.x + o.z * o.z);
+    let reach = (oo.sqrt() + bound) * 1.01 + 1e-9;
+    let mut out = Roots::default();
+    for &t in roots_in(&[c4, c3, c2, c1, c0], -reach, reach).as_slice() {
+        out.push((t + shift) / d_len);
+    }
+    out
+}
+
+fn quadric_value(q: &[f64; 10], p: DVec3) -> f64 {
+    let [a, b, c, d, e, f, g, h, i, j] = *q;
+    a * p.x * p.x
+        + b * p.y * p.y
+        + c * p.z * p.z
+        + d * p.x * p.y
+        + e * p.x * p.z
+        + f * p.y * p.z
+        + g * p.x
+        + h * p.y
+        + i * p.z
+        + j
+}
+
+fn quadric_hits(ray: &Ray, q: &[f64; 10]) -> Roots {
+    let [a, b, c, d, e, f, g, h, i, _] = *q;
+    let (o, v) = (ray.origin, ray.direction);
+    let qa = a * v.x * v.x
+        + b * v.y * v.y
+        + c * v.z * v.z
+        + d * v.x * v.y
+        + e * v.x * v.z
+        + f * v.y * v.z;
+    let qb = 2.0 * (a * o.x * v.x + b * o.y * v.y + c * o.z * v.z)
+        + d * (o.x * v.y + o.y * v.x)
+        + e * (o.x * v.z + o.z * v.x)
+        + f * (o.y * v.z + o.z * v.y)
+        + g * v.x
+        + h * v.y
+        + i * v.z;
+    let qc = quadric_value(q, o);
+    quadratic(qa, qb, qc)
+}
+
+/// Möller-Trumbore: distance and barycentric (u, v) of the hit.
+fn triangle_hit(ray: &Ray, t: &TriangleData) -> Option<(f64, f64, f64)> {
+    let p = ray.direction.cross(t.e2);
+    let det = t.e1.dot(p);
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let inv = 1.0 / det;
+    let s = ray.origin - t.p0;
+    let u = s.dot(p) * inv;
+    if !(0.0..=1.0).contains(&u) {
+        return None;
+    }
+    let q = s.cross(t.e1);
+    let v = ray.direction.dot(q) * inv;
+    if v < 0.0 || u + v > 1.0 {
+        return None;
+    }
+    Some((t.e2.dot(q) * inv, u, v))
+}
+
+fn barycentric(t: &TriangleData, p: DVec3) -> (f64, f64) {
+    let n = t.e1.cross(t.e2);
+    let nn = n.length_squared();
+    if nn == 0.0 {
+        return (0.0, 0.0);
+    }
+    let w = p - t.p0;
+    let u = w.cross(t.e2).dot(n) / nn;
+    let v = t.e1.cross(w).dot(n) / nn;
+    (u, v)
+}
+
+fn polygon_contains(poly: &PolygonData, p: DVec2) -> bool {
+    let (lo, hi) = poly.bounds;
+    if p.x < lo.x || p.y < lo.y || p.x > hi.x || p.y > hi.y {
+        return false;
+    }
+    let mut inside = false;
+    for &(start, end) in &poly.loops {
+        let pts = &poly.points[start..end];
+        let n = pts.len();
+        for k in 0..n {
+            let (a, b) = (pts[k], pts[(k + 1) % n]);
+            if (a.y > p.y) != (b.y > p.y) {
+                let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+                if p.x < x {
+                    inside = !inside;
+                }
+            }
+        }
+    }
+    inside
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn no_tables() -> ShapeTables {
+        ShapeTables::default()
+    }
 
     fn sphere(c: DVec3, r: f64) -> ShapeKind {
         ShapeKind::Sphere {
@@ -138,15 +474,17 @@ mod tests {
         }
     }
 
+    fn hit(s: &ShapeKind, ray: &Ray) -> Option<f64> {
+        s.intersect(ray, f64::INFINITY, &no_tables())
+    }
+
     #[test]
     fn sphere_hit_from_outside_and_inside() {
         let s = sphere(DVec3::new(0.0, 0.0, 5.0), 1.0);
-        let t = s.intersect(&Ray::new(DVec3::ZERO, DVec3::Z), f64::INFINITY);
-        assert_eq!(t, Some(4.0));
-        let t = s.intersect(&Ray::new(DVec3::new(0.0, 0.0, 5.0), DVec3::Z), f64::INFINITY);
-        assert_eq!(t, Some(1.0));
-        assert_eq!(s.intersect(&Ray::new(DVec3::ZERO, -DVec3::Z), f64::INFINITY), None);
-        assert_eq!(s.intersect(&Ray::new(DVec3::ZERO, DVec3::Z), 3.9), None);
+        assert_eq!(hit(&s, &Ray::new(DVec3::ZERO, DVec3::Z)), Some(4.0));
+        assert_eq!(hit(&s, &Ray::new(DVec3::new(0.0, 0.0, 5.0), DVec3::Z)), Some(1.0));
+        assert_eq!(hit(&s, &Ray::new(DVec3::ZERO, -DVec3::Z)), None);
+        assert_eq!(s.intersect(&Ray::new(DVec3::ZERO, DVec3::Z), 3.9, &no_tables()), None);
     }
 
     #[test]
@@ -156,8 +494,8 @@ mod tests {
             let e = 10f64.powi(-k);
             let inside = Ray::new(DVec3::new(1.0 - e, 0.0, 0.0), DVec3::Z);
             let outside = Ray::new(DVec3::new(1.0 + e, 0.0, 0.0), DVec3::Z);
-            assert!(s.intersect(&inside, f64::INFINITY).is_some(), "k={k}");
-            assert!(s.intersect(&outside, f64::INFINITY).is_none(), "k={k}");
+            assert!(hit(&s, &inside).is_some(), "k={k}");
+            assert!(hit(&s, &outside).is_none(), "k={k}");
         }
     }
 
@@ -167,7 +505,7 @@ mod tests {
             let c = DVec3::new(0.3 * r, 0.2 * r, dist);
             let s = sphere(c, r);
             let ray = Ray::new(DVec3::ZERO, DVec3::Z);
-            let t = s.intersect(&ray, f64::INFINITY).expect("hit");
+            let t = hit(&s, &ray).expect("hit");
             let err = ((ray.at(t) - c).length() - r).abs();
             assert!(err <= 8.0 * f64::EPSILON * dist.max(r), "{dist} {r}: {err}");
         }
@@ -180,16 +518,125 @@ mod tests {
             max: DVec3::splat(1.0),
         };
         let ray = Ray::new(DVec3::new(0.5, 0.0, -5.0), DVec3::Z);
-        let t = b.intersect(&ray, f64::INFINITY).unwrap();
+        let t = hit(&b, &ray).unwrap();
         assert_eq!(t, 4.0);
-        assert_eq!(b.normal(ray.at(t)), DVec3::new(0.0, 0.0, -1.0));
-        assert!(b.inside(DVec3::ZERO) && !b.inside(DVec3::splat(2.0)));
+        assert_eq!(b.normal(ray.at(t), &no_tables()), DVec3::new(0.0, 0.0, -1.0));
+        assert!(b.inside(DVec3::ZERO, &no_tables()) && !b.inside(DVec3::splat(2.0), &no_tables()));
         let p = ShapeKind::Plane {
             normal: DVec3::Y,
             distance: -1.0,
         };
-        let t = p.intersect(&Ray::new(DVec3::ZERO, DVec3::new(0.0, -1.0, 1.0)), f64::INFINITY);
+        let t = hit(&p, &Ray::new(DVec3::ZERO, DVec3::new(0.0, -1.0, 1.0)));
         assert_eq!(t, Some(1.0));
-        assert!(p.inside(DVec3::new(0.0, -2.0, 0.0)));
+        assert!(p.inside(DVec3::new(0.0, -2.0, 0.0), &no_tables()));
+    }
+
+    #[test]
+    fn cylinder_cone_disc() {
+        let cyl = ShapeKind::Cone {
+            r0: 1.0,
+            r1: 1.0,
+            open: false,
+        };
+        // Side hit from the x direction at z = 0.5.
+        let t = hit(&cyl, &Ray::new(DVec3::new(-5.0, 0.0, 0.5), DVec3::X)).unwrap();
+        assert!((t - 4.0).abs() < 1e-12);
+        // Cap hit from below.
+        let ray = Ray::new(DVec3::new(0.2, 0.0, -3.0), DVec3::Z);
+        let t = hit(&cyl, &ray).unwrap();
+        assert!((t - 3.0).abs() < 1e-12);
+        assert_eq!(cyl.normal(ray.at(t), &no_tables()), -DVec3::Z);
+        let open = ShapeKind::Cone {
+            r0: 1.0,
+            r1: 1.0,
+            open: true,
+        };
+        assert!((hit(&open, &ray)).is_none());
+        let cone = ShapeKind::Cone {
+            r0: 1.0,
+            r1: 0.0,
+            open: false,
+        };
+        // At z = 0.5 the radius is 0.5.
+        let t = hit(&cone, &Ray::new(DVec3::new(-5.0, 0.0, 0.5), DVec3::X)).unwrap();
+        assert!((t - 4.5).abs() < 1e-12);
+        let disc = ShapeKind::Disc {
+            radius: 2.0,
+            hole: 1.0,
+        };
+        assert!(hit(&disc, &Ray::new(DVec3::new(0.5, 0.0, -1.0), DVec3::Z)).is_none());
+        assert_eq!(hit(&disc, &Ray::new(DVec3::new(1.5, 0.0, -1.0), DVec3::Z)), Some(1.0));
+    }
+
+    #[test]
+    fn torus_four_hits_along_its_diameter() {
+        let torus = ShapeKind::Torus {
+            major: 2.0,
+            minor: 0.5,
+        };
+        let r = torus.all_hits(&Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X), &no_tables());
+        assert_eq!(r.len, 4);
+        for (got, want) in r.as_slice().iter().zip([7.5, 8.5, 11.5, 12.5]) {
+            assert!((got - want).abs() < 1e-9, "{got} vs {want}");
+        }
+        // Far away and with a scaled direction.
+        let r = torus.all_hits(&Ray::new(DVec3::new(-1e6, 0.0, 0.0), DVec3::X * 2.0), &no_tables());
+        assert_eq!(r.len, 4);
+        assert!((r.values[0] - (1e6 - 2.5) / 2.0).abs() < 1e-6);
+        assert!(torus.inside(DVec3::new(2.0, 0.0, 0.0), &no_tables()));
+        assert!(!torus.inside(DVec3::ZERO, &no_tables()));
+    }
+
+    #[test]
+    fn quadric_as_a_sphere() {
+        let tables = ShapeTables {
+            quadrics: vec![[1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]],
+            ..ShapeTables::default()
+        };
+        let q = ShapeKind::Quadric(0);
+        let t = q.intersect(&Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z), f64::INFINITY, &tables);
+        assert_eq!(t, Some(4.0));
+        assert!(q.inside(DVec3::ZERO, &tables));
+    }
+
+    #[test]
+    fn triangles_and_polygons() {
+        let tables = ShapeTables {
+            triangles: vec![TriangleData {
+                p0: DVec3::ZERO,
+                e1: DVec3::X,
+                e2: DVec3::Y,
+                normals: Some([DVec3::Z, DVec3::Z, DVec3::X]),
+            }],
+            polygons: vec![PolygonData {
+                // A square with a square hole.
+                points: vec![
+                    DVec2::new(0.0, 0.0),
+                    DVec2::new(4.0, 0.0),
+                    DVec2::new(4.0, 4.0),
+                    DVec2::new(0.0, 4.0),
+                    DVec2::new(1.0, 1.0),
+                    DVec2::new(3.0, 1.0),
+                    DVec2::new(3.0, 3.0),
+                    DVec2::new(1.0, 3.0),
+                ],
+                loops: vec![(0, 4), (4, 8)],
+                bounds: (DVec2::ZERO, DVec2::splat(4.0)),
+            }],
+            ..ShapeTables::default()
+        };
+        let tri = ShapeKind::Triangle(0);
+        let ray = Ray::new(DVec3::new(0.25, 0.25, -1.0), DVec3::Z);
+        assert_eq!(tri.intersect(&ray, f64::INFINITY, &tables), Some(1.0));
+        assert!(tri.intersect(&Ray::new(DVec3::new(0.75, 0.75, -1.0), DVec3::Z), f64::INFINITY, &tables).is_none());
+        let n = tri.shading_normal(DVec3::new(0.0, 0.5, 0.0), &tables);
+        assert!((n - DVec3::new(0.5, 0.0, 0.5)).length() < 1e-12, "{n}");
+        let poly = ShapeKind::Polygon(0);
+        let through = |x: f64, y: f64| {
+            poly.intersect(&Ray::new(DVec3::new(x, y, -1.0), DVec3::Z), f64::INFINITY, &tables)
+        };
+        assert_eq!(through(0.5, 0.5), Some(1.0));
+        assert_eq!(through(2.0, 2.0), None);
+        assert_eq!(through(5.0, 2.0), None);
     }
 }

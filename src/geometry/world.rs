@@ -1,18 +1,23 @@
-//! The render-ready geometry: primitives with baked transforms, a BVH over the bounded
-//! ones, and the unbounded ones (planes) kept aside.
+//! The render-ready geometry: primitives with baked transforms, CSG nodes over them, a BVH
+//! over the bounded top-level items, and the unbounded ones (planes, quadrics, inverses)
+//! kept aside.
 
 use glam::DVec3;
 
-use super::{Aabb, Bvh, Ray, ShapeKind, Transform};
+use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform};
 
-/// Per-primitive visibility flags, tested as a mask so each kind of ray can skip some.
+/// Per-primitive flags, tested as a mask so each kind of ray can skip some.
 pub mod flags {
     pub const NO_SHADOW: u8 = 1;
     pub const NO_IMAGE: u8 = 2;
     pub const NO_REFLECTION: u8 = 4;
+    /// Inside and outside swapped (POV-Ray's `inverse`).
+    pub const INVERSE: u8 = 8;
 }
 
 const NO_TRANSFORM: u32 = u32::MAX;
+/// Items (what the BVH and CSG nodes refer to) are primitives, or CSG nodes with this bit.
+const CSG_BIT: u32 = 1 << 31;
 
 #[derive(Clone, Copy, Debug)]
 pub struct Primitive {
@@ -23,10 +28,34 @@ pub struct Primitive {
     pub flags: u8,
 }
 
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOp {
+    Union,
+    Merge,
+    Intersection,
+    Difference,
+    /// The first child's surface, kept where it is inside every other child (`clipped_by`).
+    Clip,
+}
+
+#[derive(Clone, Debug)]
+struct CsgNode {
+    op: CsgOp,
+    children: Vec<u32>,
+    inverse: bool,
+}
+
+/// A reference to something the world can intersect: a primitive or a CSG node.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Item(u32);
+
 #[derive(Clone, Copy, Debug)]
 pub struct Hit {
     pub t: f64,
     pub primitive: u32,
+    /// The surface's outward side is reversed (the subtracted part of a difference, or an
+    /// inverse object).
+    pub flipped: bool,
 }
 
 /// Where a ray met a surface, in world space.
@@ -35,6 +64,8 @@ pub struct SurfacePoint {
     pub point: DVec3,
     /// Outward geometric normal, unit length.
     pub normal: DVec3,
+    /// The normal for shading (interpolated on smooth triangles), unit, on the same side.
+    pub shading_normal: DVec3,
     pub material: u32,
 }
 
@@ -42,20 +73,31 @@ pub struct SurfacePoint {
 pub struct World {
     primitives: Vec<Primitive>,
     transforms: Vec<Transform>,
+    tables: ShapeTables,
+    csg: Vec<CsgNode>,
     bvh: Bvh,
     unbounded: Vec<u32>,
 }
 
-/// Collects primitives, then builds the BVH once.
+/// Collects primitives and CSG nodes, then builds the BVH over the top-level items.
 #[derive(Default)]
 pub struct WorldBuilder {
     primitives: Vec<Primitive>,
     transforms: Vec<Transform>,
+    pub tables: ShapeTables,
+    csg: Vec<CsgNode>,
+    top: Vec<Item>,
 }
 
 impl WorldBuilder {
     /// Adds a shape placed by `transform`; simple placements are baked into the shape.
-    pub fn add(&mut self, shape: ShapeKind, transform: &Transform, material: u32, flags: u8) {
+    pub fn primitive(
+        &mut self,
+        shape: ShapeKind,
+        transform: &Transform,
+        material: u32,
+        flags: u8,
+    ) -> Item {
         let (shape, index) = match bake(shape, transform) {
             Some(baked) => (baked, NO_TRANSFORM),
             None => {
@@ -69,35 +111,49 @@ impl WorldBuilder {
             material,
             flags,
         });
+        Item((self.primitives.len() - 1) as u32)
+    }
+
+    pub fn csg(&mut self, op: CsgOp, children: Vec<Item>, inverse: bool) -> Item {
+        self.csg.push(CsgNode {
+            op,
+            children: children.into_iter().map(|i| i.0).collect(),
+            inverse,
+        });
+        Item((self.csg.len() - 1) as u32 | CSG_BIT)
+    }
+
+    /// Makes an item part of the scene (not only a CSG child).
+    pub fn add_top(&mut self, item: Item) {
+        self.top.push(item);
     }
 
     pub fn build(self) -> World {
+        let mut world = World {
+            primitives: self.primitives,
+            transforms: self.transforms,
+            tables: self.tables,
+            csg: self.csg,
+            bvh: Bvh::default(),
+            unbounded: Vec::new(),
+        };
         let mut bounded = Vec::new();
         let mut bounds = Vec::new();
-        let mut unbounded = Vec::new();
-        for (i, p) in self.primitives.iter().enumerate() {
-            let b = p.shape.bounds().map(|b| match p.transform {
-                NO_TRANSFORM => b,
-                t => b.transformed(&self.transforms[t as usize]),
-            });
-            match b {
+        for item in &self.top {
+            match world.item_bounds(item.0) {
                 Some(b) if b.is_finite() && !b.is_empty() => {
-                    bounded.push(i as u32);
+                    bounded.push(item.0);
                     bounds.push(b);
                 }
-                _ => unbounded.push(i as u32),
+                _ => world.unbounded.push(item.0),
             }
         }
         let mut bvh = Bvh::build(&bounds);
         for item in &mut bvh.items {
             *item = bounded[*item as usize];
         }
-        World {
-            primitives: self.primitives,
-            transforms: self.transforms,
-            bvh,
-            unbounded,
-        }
+        world.bvh = bvh;
+        world
     }
 }
 
@@ -130,14 +186,14 @@ fn bake(shape: ShapeKind, t: &Transform) -> Option<ShapeKind> {
         }),
         ShapeKind::Plane { normal, distance } => {
             let n = t.normal(normal);
-            let len = n.length();
             let p = t.point(normal * (distance / normal.length_squared()));
-            let n = n / len;
+            let n = n / n.length();
             Some(ShapeKind::Plane {
                 normal: n,
                 distance: n.dot(p),
             })
         }
+        _ => None,
     }
 }
 
@@ -146,15 +202,154 @@ impl World {
         self.primitives.len()
     }
 
+    fn item_bounds(&self, item: u32) -> Option<Aabb> {
+        if item & CSG_BIT == 0 {
+            let p = &self.primitives[item as usize];
+            if p.flags & flags::INVERSE != 0 {
+                return None;
+            }
+            let b = p.shape.bounds(&self.tables)?;
+            return Some(match p.transform {
+                NO_TRANSFORM => b,
+                t => b.transformed(&self.transforms[t as usize]),
+            });
+        }
+        let node = &self.csg[(item & !CSG_BIT) as usize];
+        if node.inverse {
+            return None;
+        }
+        let mut children = node.children.iter().map(|&c| self.item_bounds(c));
+        match node.op {
+            CsgOp::Union | CsgOp::Merge => children.try_fold(Aabb::EMPTY, |acc, b| Some(acc.union(&b?))),
+            CsgOp::Difference => children.next().flatten(),
+            CsgOp::Intersection | CsgOp::Clip => {
+                // Each bounded child limits the whole; unbounded ones do not.
+                let mut acc: Option<Aabb> = None;
+                for b in children.flatten() {
+                    acc = Some(match acc {
+                        None => b,
+                        Some(a) => Aabb {
+                            min: a.min.max(b.min),
+                            max: a.max.min(b.max),
+                        },
+                    });
+                }
+                acc
+            }
+        }
+    }
+
     #[inline]
-    fn primitive_hit(&self, p: &Primitive, ray: &Ray, t_max: f64) -> Option<f64> {
+    fn local_ray(&self, p: &Primitive, ray: &Ray) -> Ray {
         if p.transform == NO_TRANSFORM {
-            p.shape.intersect(ray, t_max)
+            *ray
         } else {
             let t = &self.transforms[p.transform as usize];
-            let local = Ray::new(t.inverse_point(ray.origin), t.inverse_vector(ray.direction));
-            p.shape.intersect(&local, t_max)
+            Ray::new(t.inverse_point(ray.origin), t.inverse_vector(ray.direction))
         }
+    }
+
+    /// The nearest hit of one item in (0, t_max).
+    #[inline]
+    fn item_hit(&self, item: u32, ray: &Ray, t_max: f64, skip: u8) -> Option<Hit> {
+        if item & CSG_BIT == 0 {
+            let p = &self.primitives[item as usize];
+            if p.flags & skip != 0 {
+                return None;
+            }
+            let t = p.shape.intersect(&self.local_ray(p, ray), t_max, &self.tables)?;
+            return Some(Hit {
+                t,
+                primitive: item,
+                flipped: p.flags & flags::INVERSE != 0,
+            });
+        }
+        let mut best: Option<Hit> = None;
+        let mut t_best = t_max;
+        self.for_each_hit(item, ray, t_max, skip, &mut |hit| {
+            if hit.t < t_best {
+                t_best = hit.t;
+                best = Some(hit);
+            }
+        });
+        best
+    }
+
+    /// Every visible surface crossing of an item in (0, t_max), in no particular order.
+    fn for_each_hit(&self, item: u32, ray: &Ray, t_max: f64, skip: u8, f: &mut dyn FnMut(Hit)) {
+        if item & CSG_BIT == 0 {
+            let p = &self.primitives[item as usize];
+            if p.flags & skip != 0 {
+                return;
+            }
+            let hits = p.shape.all_hits(&self.local_ray(p, ray), &self.tables);
+            for &t in hits.as_slice() {
+                if t > 0.0 && t < t_max {
+                    f(Hit {
+                        t,
+                        primitive: item,
+                        flipped: p.flags & flags::INVERSE != 0,
+                    });
+                }
+            }
+            return;
+        }
+        let node = &self.csg[(item & !CSG_BIT) as usize];
+        let surfaces = if node.op == CsgOp::Clip {
+            &node.children[..1]
+        } else {
+            &node.children[..]
+        };
+        for (i, &child) in surfaces.iter().enumerate() {
+            self.for_each_hit(child, ray, t_max, skip, &mut |hit: Hit| {
+                if node.op == CsgOp::Union {
+                    f(hit);
+                    return;
+                }
+                let p = ray.at(hit.t);
+                let others = node
+                    .children
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, _)| j != i)
+                    .map(|(j, &c)| (j, self.inside(c, p)));
+                let keep = match node.op {
+                    CsgOp::Union => true,
+                    CsgOp::Merge => others.into_iter().all(|(_, inside)| !inside),
+                    CsgOp::Intersection | CsgOp::Clip => others.into_iter().all(|(_, inside)| inside),
+                    CsgOp::Difference => others
+                        .into_iter()
+                        .all(|(j, inside)| if j == 0 { inside } else { !inside }),
+                };
+                if keep {
+                    let subtracted = node.op == CsgOp::Difference && i > 0;
+                    f(Hit {
+                        flipped: hit.flipped ^ subtracted ^ node.inverse,
+                        ..hit
+                    });
+                }
+            });
+        }
+    }
+
+    /// Whether a world point is inside an item's solid.
+    pub fn inside(&self, item: u32, p: DVec3) -> bool {
+        if item & CSG_BIT == 0 {
+            let prim = &self.primitives[item as usize];
+            let local = match prim.transform {
+                NO_TRANSFORM => p,
+                t => self.transforms[t as usize].inverse_point(p),
+            };
+            return prim.shape.inside(local, &self.tables) ^ (prim.flags & flags::INVERSE != 0);
+        }
+        let node = &self.csg[(item & !CSG_BIT) as usize];
+        let mut children = node.children.iter().map(|&c| self.inside(c, p));
+        let inside = match node.op {
+            CsgOp::Union | CsgOp::Merge => children.any(|x| x),
+            CsgOp::Intersection | CsgOp::Clip => children.all(|x| x),
+            CsgOp::Difference => children.next().unwrap_or(false) && !children.any(|x| x),
+        };
+        inside ^ node.inverse
     }
 
     /// The nearest hit in (0, t_max), ignoring primitives with any of the `skip` flags.
@@ -162,21 +357,15 @@ impl World {
         let mut best: Option<Hit> = None;
         let mut t_best = t_max;
         for &i in &self.unbounded {
-            let p = &self.primitives[i as usize];
-            if p.flags & skip == 0 {
-                if let Some(t) = self.primitive_hit(p, ray, t_best) {
-                    t_best = t;
-                    best = Some(Hit { t, primitive: i });
-                }
+            if let Some(hit) = self.item_hit(i, ray, t_best, skip) {
+                t_best = hit.t;
+                best = Some(hit);
             }
         }
         self.bvh.traverse(ray, t_best, |i, t_cur| {
-            let p = &self.primitives[i as usize];
-            if p.flags & skip == 0 {
-                if let Some(t) = self.primitive_hit(p, ray, t_cur) {
-                    best = Some(Hit { t, primitive: i });
-                    return Some(t);
-                }
+            if let Some(hit) = self.item_hit(i, ray, t_cur, skip) {
+                best = Some(hit);
+                return Some(hit.t);
             }
             Some(t_cur)
         });
@@ -188,15 +377,13 @@ impl World {
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
         let skip = flags::NO_SHADOW;
         for &i in &self.unbounded {
-            let p = &self.primitives[i as usize];
-            if p.flags & skip == 0 && self.primitive_hit(p, ray, t_max).is_some() {
+            if self.item_hit(i, ray, t_max, skip).is_some() {
                 return true;
             }
         }
         let mut hit = false;
         self.bvh.traverse(ray, t_max, |i, t_cur| {
-            let p = &self.primitives[i as usize];
-            if p.flags & skip == 0 && self.primitive_hit(p, ray, t_cur).is_some() {
+            if self.item_hit(i, ray, t_cur, skip).is_some() {
                 hit = true;
                 return None;
             }
@@ -208,20 +395,139 @@ impl World {
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfacePoint {
         let p = &self.primitives[hit.primitive as usize];
         let point = ray.at(hit.t);
-        let normal = if p.transform == NO_TRANSFORM {
-            p.shape.normal(point)
+        let (normal, shading) = if p.transform == NO_TRANSFORM {
+            (
+                p.shape.normal(point, &self.tables),
+                p.shape.shading_normal(point, &self.tables),
+            )
         } else {
             let t = &self.transforms[p.transform as usize];
-            t.normal(p.shape.normal(t.inverse_point(point)))
+            let local = t.inverse_point(point);
+            (
+                t.normal(p.shape.normal(local, &self.tables)),
+                t.normal(p.shape.shading_normal(local, &self.tables)),
+            )
         };
+        let sign = if hit.flipped { -1.0 } else { 1.0 };
+        let normal = normal.normalize_or(DVec3::Y) * sign;
+        let mut shading_normal = shading.normalize_or(normal) * sign;
+        if shading_normal.dot(normal) < 0.0 {
+            shading_normal = -shading_normal;
+        }
         SurfacePoint {
             point,
-            normal: normal.normalize_or(DVec3::Y),
+            normal,
+            shading_normal,
             material: p.material,
         }
     }
 
     pub fn bounds(&self) -> Aabb {
         self.bvh.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sphere_at(b: &mut WorldBuilder, x: f64, r: f64) -> Item {
+        b.primitive(
+            ShapeKind::Sphere {
+                center: DVec3::new(x, 0.0, 0.0),
+                radius: r,
+            },
+            &Transform::IDENTITY,
+            0,
+            0,
+        )
+    }
+
+    fn first_hit(world: &World, origin: DVec3, dir: DVec3) -> Option<f64> {
+        world
+            .intersect(&Ray::new(origin, dir), f64::INFINITY, 0)
+            .map(|h| h.t)
+    }
+
+    #[test]
+    fn difference_cuts_a_hole() {
+        // A unit sphere minus a smaller sphere that pokes out of its front at x = -1.
+        let mut b = WorldBuilder::default();
+        let a = sphere_at(&mut b, 0.0, 1.0);
+        let c = sphere_at(&mut b, -1.0, 0.5);
+        let d = b.csg(CsgOp::Difference, vec![a, c], false);
+        b.add_top(d);
+        let w = b.build();
+        // Along the x axis from the left: the small sphere's far side at x = -0.5.
+        let t = first_hit(&w, DVec3::new(-5.0, 0.0, 0.0), DVec3::X).unwrap();
+        assert!((t - 4.5).abs() < 1e-12, "{t}");
+        let hit = w.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), f64::INFINITY, 0).unwrap();
+        // The cut surface's outward normal points into the hole (towards -x).
+        let s = w.surface(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), &hit);
+        assert!(s.normal.x < -0.99, "{:?}", s.normal);
+        // Away from the hole the big sphere is intact.
+        let t = first_hit(&w, DVec3::new(5.0, 0.0, 0.0), -DVec3::X).unwrap();
+        assert!((t - 4.0).abs() < 1e-12);
+        assert!(w.inside(d.0, DVec3::new(0.5, 0.0, 0.0)));
+        assert!(!w.inside(d.0, DVec3::new(-0.8, 0.0, 0.0)));
+    }
+
+    #[test]
+    fn intersection_and_merge() {
+        let mut b = WorldBuilder::default();
+        let l = sphere_at(&mut b, -0.5, 1.0);
+        let r = sphere_at(&mut b, 0.5, 1.0);
+        let lens = b.csg(CsgOp::Intersection, vec![l, r], false);
+        b.add_top(lens);
+        let w = b.build();
+        // The lens spans x in [-0.5, 0.5].
+        assert!((first_hit(&w, DVec3::new(-5.0, 0.0, 0.0), DVec3::X).unwrap() - 4.5).abs() < 1e-12);
+
+        let mut b = WorldBuilder::default();
+        let l = sphere_at(&mut b, -0.5, 1.0);
+        let r = sphere_at(&mut b, 0.5, 1.0);
+        let m = b.csg(CsgOp::Merge, vec![l, r], false);
+        b.add_top(m);
+        let w = b.build();
+        // From inside the left sphere towards +x, the merge has no inner wall at x = 0.5 - 1.
+        let t = first_hit(&w, DVec3::new(-1.0, 0.0, 0.0), DVec3::X).unwrap();
+        assert!((t - 2.5).abs() < 1e-12, "{t}");
+    }
+
+    #[test]
+    fn coincident_faces_resolve_the_same_way_everywhere() {
+        // A box minus a box sharing its top face. Points on a surface count as outside, so
+        // the shared face is kept as a skin over the pocket, at every pixel alike.
+        let mut b = WorldBuilder::default();
+        let outer = b.primitive(
+            ShapeKind::Box {
+                min: DVec3::splat(-1.0),
+                max: DVec3::splat(1.0),
+            },
+            &Transform::IDENTITY,
+            0,
+            0,
+        );
+        let cut = b.primitive(
+            ShapeKind::Box {
+                min: DVec3::new(-0.5, 0.0, -0.5),
+                max: DVec3::new(0.5, 1.0, 0.5),
+            },
+            &Transform::IDENTITY,
+            0,
+            0,
+        );
+        let d = b.csg(CsgOp::Difference, vec![outer, cut], false);
+        b.add_top(d);
+        let w = b.build();
+        let mut ts = Vec::new();
+        for i in 0..50 {
+            for j in 0..50 {
+                let x = -0.45 + 0.9 * i as f64 / 49.0;
+                let z = -0.45 + 0.9 * j as f64 / 49.0;
+                ts.push(first_hit(&w, DVec3::new(x, 5.0, z), -DVec3::Y).unwrap());
+            }
+        }
+        assert!(ts.iter().all(|&t| (t - 4.0).abs() < 1e-9), "{:?}", &ts[..5]);
     }
 }

@@ -89,11 +89,11 @@ impl<'a> Integrator<'a> {
         let d = ray.direction.normalize();
         let p = surface.point;
         let geometric = surface.normal;
-        // The normal facing the incoming ray.
+        // The shading normal, turned to face the incoming ray.
         let n = if geometric.dot(d) > 0.0 {
-            -geometric
+            -surface.shading_normal
         } else {
-            geometric
+            surface.shading_normal
         };
         let pigment = evaluate_pigment(&texture.pigment, p);
         let c = pigment.rgb;
@@ -167,19 +167,23 @@ impl<'a> Integrator<'a> {
 
         let reflection = &finish.reflection;
         if !reflection.is_zero() && level < scene.settings.max_trace_level {
-            let r = reflectivity(reflection.min, reflection.max, reflection.falloff, -d.dot(n));
+            let r = reflectivity(
+                reflection.min,
+                reflection.max,
+                reflection.falloff,
+                -d.dot(n),
+            );
             let path_weight = weight * r.max_element();
             if path_weight > 0.0 {
                 // Roulette only where the reflected colour enters linearly; a reflection
                 // exponent makes it a non-linear function, where a random cut would bias.
-                let q = if self.roulette
-                    && path_weight < ROULETTE_WEIGHT
-                    && reflection.exponent == 1.0
-                {
-                    (path_weight / ROULETTE_WEIGHT).max(ROULETTE_MIN_Q)
-                } else {
-                    1.0
-                };
+                let q =
+                    if self.roulette && path_weight < ROULETTE_WEIGHT && reflection.exponent == 1.0
+                    {
+                        (path_weight / ROULETTE_WEIGHT).max(ROULETTE_MIN_Q)
+                    } else {
+                        1.0
+                    };
                 let survive = if q < 1.0 {
                     sampler.set_dimension(level_base + self.dims_per_level - 1);
                     sampler.get_1d() < q

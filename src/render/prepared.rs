@@ -1,11 +1,15 @@
-//! The render-ready scene: the scene model flattened into primitives with world-space
-//! transforms and a BVH, each pointing at its material, plus lights prepared for sampling.
+//! The render-ready scene: the scene model turned into primitives with world-space
+//! transforms, CSG nodes and a BVH, each primitive pointing at its material, plus lights
+//! prepared for sampling.
 
-use crate::geometry::{Transform, World, WorldBuilder, flags};
+use glam::{DAffine3, DVec2, DVec3};
+
+use crate::geometry::{
+    CsgOp, Item, PolygonData, ShapeKind, Transform, TriangleData, World, WorldBuilder, flags,
+};
 use crate::scene::{Camera, Colour, GlobalSettings, Object, ObjectFlags, Scene, Shape, Texture};
 
 use super::lights::PreparedLight;
-use crate::geometry::ShapeKind;
 
 #[derive(Clone, Debug)]
 pub struct Material {
@@ -26,21 +30,17 @@ pub struct PreparedScene {
 
 impl PreparedScene {
     pub fn new(scene: &Scene) -> PreparedScene {
-        let mut builder = WorldBuilder::default();
-        let mut materials = Vec::new();
+        let mut builder = Builder {
+            world: WorldBuilder::default(),
+            materials: Vec::new(),
+        };
         let default_texture = Texture::default();
         for object in &scene.objects {
-            flatten(
-                object,
-                &default_texture,
-                ObjectFlags::default(),
-                &mut builder,
-                &mut materials,
-            );
+            builder.object(object, &default_texture, ObjectFlags::default(), true);
         }
         PreparedScene {
-            world: builder.build(),
-            materials,
+            world: builder.world.build(),
+            materials: builder.materials,
             lights: scene.lights.iter().map(PreparedLight::new).collect(),
             camera: scene.camera.clone(),
             background: scene.background,
@@ -50,59 +50,308 @@ impl PreparedScene {
     }
 }
 
-/// Unions are groups for rendering: their children become primitives of their own, taking
-/// the union's texture where they have none and its flags in addition to theirs.
-fn flatten(
-    object: &Object,
-    inherited: &Texture,
-    inherited_flags: ObjectFlags,
-    builder: &mut WorldBuilder,
-    materials: &mut Vec<Material>,
-) {
-    let texture = object.texture.as_ref().unwrap_or(inherited);
-    let f = object.flags;
-    let combined = ObjectFlags {
-        no_shadow: f.no_shadow || inherited_flags.no_shadow,
-        no_image: f.no_image || inherited_flags.no_image,
-        no_reflection: f.no_reflection || inherited_flags.no_reflection,
-        hollow: f.hollow || inherited_flags.hollow,
+struct Builder {
+    world: WorldBuilder,
+    materials: Vec<Material>,
+}
+
+fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
+    ObjectFlags {
+        no_shadow: f.no_shadow || inherited.no_shadow,
+        no_image: f.no_image || inherited.no_image,
+        no_reflection: f.no_reflection || inherited.no_reflection,
+        hollow: f.hollow || inherited.hollow,
         inverse: f.inverse,
-        double_illuminate: f.double_illuminate || inherited_flags.double_illuminate,
-    };
-    let kind = match &object.shape {
-        Shape::Union(children) => {
-            for child in children {
-                flatten(child, texture, combined, builder, materials);
+        double_illuminate: f.double_illuminate || inherited.double_illuminate,
+    }
+}
+
+/// The frame that takes the unit z axis to `from -> to` without scaling x and y.
+fn axis_frame(from: DVec3, to: DVec3) -> Option<Transform> {
+    let axis = to - from;
+    let len = axis.length();
+    if !(len > 0.0) || !len.is_finite() {
+        return None;
+    }
+    let w = axis / len;
+    let (u, v) = w.any_orthonormal_pair();
+    Transform::from_affine(DAffine3::from_cols(u, v, axis, from))
+}
+
+impl Builder {
+    /// Adds an object; at the top level, unions dissolve into their children so the BVH sees
+    /// each part. Returns the item for use as a CSG child.
+    fn object(
+        &mut self,
+        object: &Object,
+        inherited: &Texture,
+        inherited_flags: ObjectFlags,
+        top: bool,
+    ) -> Option<Item> {
+        let texture = object.texture.as_ref().unwrap_or(inherited);
+        let f = combine(object.flags, inherited_flags);
+        let clipped = !object.clipped_by.is_empty();
+        let group_at_top = top && !f.inverse && !clipped;
+        let item = match &object.shape {
+            Shape::Union(children) if group_at_top => {
+                for child in children {
+                    self.object(child, texture, f, true);
+                }
+                return None;
             }
-            return;
+            Shape::Mesh(mesh) if group_at_top => {
+                for t in &mesh.triangles {
+                    if let Some(i) = self.triangle(t.corners, t.normals, object, texture, f) {
+                        self.world.add_top(i);
+                    }
+                }
+                return None;
+            }
+            Shape::Union(children)
+            | Shape::Merge(children)
+            | Shape::Intersection(children)
+            | Shape::Difference(children) => {
+                let op = match &object.shape {
+                    Shape::Union(_) => CsgOp::Union,
+                    Shape::Merge(_) => CsgOp::Merge,
+                    Shape::Intersection(_) => CsgOp::Intersection,
+                    _ => CsgOp::Difference,
+                };
+                let items: Vec<Item> = children
+                    .iter()
+                    .filter_map(|c| self.object(c, texture, ObjectFlags { inverse: false, ..f }, false))
+                    .collect();
+                if items.is_empty() {
+                    return None;
+                }
+                self.world.csg(op, items, f.inverse)
+            }
+            Shape::Mesh(mesh) => {
+                let items: Vec<Item> = mesh
+                    .triangles
+                    .iter()
+                    .filter_map(|t| self.triangle(t.corners, t.normals, object, texture, f))
+                    .collect();
+                if items.is_empty() {
+                    return None;
+                }
+                self.world.csg(CsgOp::Union, items, f.inverse)
+            }
+            Shape::Triangle { corners } => self.triangle(*corners, None, object, texture, f)?,
+            Shape::SmoothTriangle { corners, normals } => {
+                self.triangle(*corners, Some(*normals), object, texture, f)?
+            }
+            shape => {
+                let (kind, local) = self.shape_kind(shape)?;
+                let transform = match local {
+                    Some(frame) => frame.then(&object.transform),
+                    None => object.transform,
+                };
+                let material = self.material(texture, f);
+                self.world
+                    .primitive(kind, &transform, material, mask(f))
+            }
+        };
+        let item = if clipped {
+            let mut parts = vec![item];
+            for clip in &object.clipped_by {
+                parts.extend(self.object(clip, texture, ObjectFlags::default(), false));
+            }
+            self.world.csg(CsgOp::Clip, parts, false)
+        } else {
+            item
+        };
+        if top {
+            self.world.add_top(item);
         }
-        Shape::Sphere { center, radius } => ShapeKind::Sphere {
-            center: *center,
-            radius: *radius,
-        },
-        Shape::Plane { normal, distance } => ShapeKind::Plane {
-            normal: *normal,
-            distance: *distance,
-        },
-        Shape::Box { corner1, corner2 } => ShapeKind::Box {
-            min: corner1.min(*corner2),
-            max: corner1.max(*corner2),
-        },
-    };
-    let mut mask = 0;
-    if combined.no_shadow {
-        mask |= flags::NO_SHADOW;
+        Some(item)
     }
-    if combined.no_image {
-        mask |= flags::NO_IMAGE;
+
+    fn material(&mut self, texture: &Texture, f: ObjectFlags) -> u32 {
+        self.materials.push(Material {
+            texture: texture.clone(),
+            double_illuminate: f.double_illuminate,
+        });
+        (self.materials.len() - 1) as u32
     }
-    if combined.no_reflection {
-        mask |= flags::NO_REFLECTION;
+
+    /// Triangles are moved into world space at build time: an affine map keeps a triangle
+    /// a triangle, which spares a transform per ray.
+    fn triangle(
+        &mut self,
+        corners: [DVec3; 3],
+        normals: Option<[DVec3; 3]>,
+        object: &Object,
+        texture: &Texture,
+        f: ObjectFlags,
+    ) -> Option<Item> {
+        let t = &object.transform;
+        let p = corners.map(|c| t.point(c));
+        let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
+        if e1.cross(e2).length_squared() == 0.0 {
+            return None;
+        }
+        let index = self.world.tables.triangles.len() as u32;
+        self.world.tables.triangles.push(TriangleData {
+            p0: p[0],
+            e1,
+            e2,
+            normals: normals.map(|n| n.map(|n| t.normal(n).normalize_or(DVec3::Z))),
+        });
+        let material = self.material(texture, f);
+        Some(self.world.primitive(
+            ShapeKind::Triangle(index),
+            &Transform::IDENTITY,
+            material,
+            mask(f),
+        ))
     }
-    materials.push(Material {
-        texture: texture.clone(),
-        double_illuminate: combined.double_illuminate,
-    });
-    let transform: &Transform = &object.transform;
-    builder.add(kind, transform, (materials.len() - 1) as u32, mask);
+
+    /// The render shape for a scene shape, with the frame that places its canonical form.
+    fn shape_kind(&mut self, shape: &Shape) -> Option<(ShapeKind, Option<Transform>)> {
+        Some(match *shape {
+            Shape::Sphere { center, radius } => (ShapeKind::Sphere { center, radius }, None),
+            Shape::Plane { normal, distance } => (ShapeKind::Plane { normal, distance }, None),
+            Shape::Box { corner1, corner2 } => (
+                ShapeKind::Box {
+                    min: corner1.min(corner2),
+                    max: corner1.max(corner2),
+                },
+                None,
+            ),
+            Shape::Cylinder {
+                base,
+                cap,
+                radius,
+                open,
+            } => (
+                ShapeKind::Cone {
+                    r0: radius,
+                    r1: radius,
+                    open,
+                },
+                Some(axis_frame(base, cap)?),
+            ),
+            Shape::Cone {
+                base,
+                base_radius,
+                cap,
+                cap_radius,
+                open,
+            } => (
+                ShapeKind::Cone {
+                    r0: base_radius,
+                    r1: cap_radius,
+                    open,
+                },
+                Some(axis_frame(base, cap)?),
+            ),
+            Shape::Disc {
+                center,
+                normal,
+                radius,
+                hole_radius,
+            } => (
+                ShapeKind::Disc {
+                    radius,
+                    hole: hole_radius,
+                },
+                Some(axis_frame(center, center + normal.normalize_or(DVec3::Y))?),
+            ),
+            Shape::Torus { major, minor } => (ShapeKind::Torus { major, minor }, None),
+            Shape::Quadric { coefficients } => {
+                self.world.tables.quadrics.push(coefficients);
+                (
+                    ShapeKind::Quadric((self.world.tables.quadrics.len() - 1) as u32),
+                    None,
+                )
+            }
+            Shape::Polygon { ref points } => {
+                let (data, frame) = polygon(points)?;
+                self.world.tables.polygons.push(data);
+                (
+                    ShapeKind::Polygon((self.world.tables.polygons.len() - 1) as u32),
+                    Some(frame),
+                )
+            }
+            Shape::Triangle { .. }
+            | Shape::SmoothTriangle { .. }
+            | Shape::Mesh(_)
+            | Shape::Union(_)
+            | Shape::Merge(_)
+            | Shape::Intersection(_)
+            | Shape::Difference(_) => return None,
+        })
+    }
+}
+
+fn mask(f: ObjectFlags) -> u8 {
+    let mut m = 0;
+    if f.no_shadow {
+        m |= flags::NO_SHADOW;
+    }
+    if f.no_image {
+        m |= flags::NO_IMAGE;
+    }
+    if f.no_reflection {
+        m |= flags::NO_REFLECTION;
+    }
+    if f.inverse {
+        m |= flags::INVERSE;
+    }
+    m
+}
+
+/// A polygon's loops in 2D coordinates of its plane, and the frame back to 3D.
+fn polygon(points: &[DVec3]) -> Option<(PolygonData, Transform)> {
+    // Newell's normal is robust for any planar polygon, convex or not.
+    let mut normal = DVec3::ZERO;
+    for (i, a) in points.iter().enumerate() {
+        let b = points[(i + 1) % points.len()];
+        normal += DVec3::new(
+            (a.y - b.y) * (a.z + b.z),
+            (a.z - b.z) * (a.x + b.x),
+            (a.x - b.x) * (a.y + b.y),
+        );
+    }
+    let origin = *points.first()?;
+    let frame = axis_frame(origin, origin + normal.try_normalize()?)?;
+    let local: Vec<DVec2> = points
+        .iter()
+        .map(|&p| frame.inverse_point(p).truncate())
+        .collect();
+    let mut loops = Vec::new();
+    let mut kept = Vec::new();
+    let mut start = 0;
+    let mut i = 0;
+    while i < local.len() {
+        kept.push(local[i]);
+        let first = kept[start];
+        if kept.len() - start > 1 && local[i] == first {
+            kept.pop();
+            if kept.len() - start >= 3 {
+                loops.push((start, kept.len()));
+            } else {
+                kept.truncate(start);
+            }
+            start = kept.len();
+        }
+        i += 1;
+    }
+    if kept.len() - start >= 3 {
+        loops.push((start, kept.len()));
+    }
+    if loops.is_empty() {
+        return None;
+    }
+    let lo = kept.iter().fold(DVec2::splat(f64::INFINITY), |a, p| a.min(*p));
+    let hi = kept.iter().fold(DVec2::splat(f64::NEG_INFINITY), |a, p| a.max(*p));
+    Some((
+        PolygonData {
+            points: kept,
+            loops,
+            bounds: (lo, hi),
+        },
+        frame,
+    ))
 }

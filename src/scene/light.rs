@@ -14,7 +14,9 @@ pub enum LightKind {
         tightness: f64,
     },
     /// Shines along `point_at - location` everywhere.
-    Parallel { point_at: DVec3 },
+    Parallel {
+        point_at: DVec3,
+    },
 }
 
 /// `area_light <axis1>, <axis2>, size1, size2 ...`: a grid of point lights POV-Ray uses

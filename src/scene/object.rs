@@ -2,14 +2,104 @@ use glam::DVec3;
 
 use super::{Interior, Texture, Transform};
 
-/// The shapes a scene can hold. CSG shapes own their children.
+/// The shapes a scene can hold, in the scene's own terms (POV-Ray's parameters). CSG
+/// shapes own their children.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
-    Sphere { center: DVec3, radius: f64 },
+    Sphere {
+        center: DVec3,
+        radius: f64,
+    },
     /// Points p with `normal . p = distance`; the inside is where `normal . p < distance`.
-    Plane { normal: DVec3, distance: f64 },
-    Box { corner1: DVec3, corner2: DVec3 },
+    Plane {
+        normal: DVec3,
+        distance: f64,
+    },
+    Box {
+        corner1: DVec3,
+        corner2: DVec3,
+    },
+    Cylinder {
+        base: DVec3,
+        cap: DVec3,
+        radius: f64,
+        open: bool,
+    },
+    Cone {
+        base: DVec3,
+        base_radius: f64,
+        cap: DVec3,
+        cap_radius: f64,
+        open: bool,
+    },
+    Disc {
+        center: DVec3,
+        normal: DVec3,
+        radius: f64,
+        hole_radius: f64,
+    },
+    /// In the xz plane around the y axis.
+    Torus {
+        major: f64,
+        minor: f64,
+    },
+    /// `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`:
+    /// A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0.
+    Quadric {
+        coefficients: [f64; 10],
+    },
+    Triangle {
+        corners: [DVec3; 3],
+    },
+    SmoothTriangle {
+        corners: [DVec3; 3],
+        normals: [DVec3; 3],
+    },
+    Mesh(Mesh),
+    /// POV-Ray's polygon: points in one plane; a sub-polygon closes when it repeats its
+    /// first point, and sub-polygons combine by the even-odd rule (holes).
+    Polygon {
+        points: Vec<DVec3>,
+    },
     Union(Vec<Object>),
+    /// A union without the interior surfaces.
+    Merge(Vec<Object>),
+    Intersection(Vec<Object>),
+    /// The first child minus all the others.
+    Difference(Vec<Object>),
+}
+
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Mesh {
+    pub triangles: Vec<MeshTriangle>,
+    /// A direction for the inside test (ray parity); without it a mesh has no inside.
+    pub inside_vector: Option<DVec3>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshTriangle {
+    pub corners: [DVec3; 3],
+    pub normals: Option<[DVec3; 3]>,
+}
+
+impl Shape {
+    pub fn children(&self) -> Option<&[Object]> {
+        match self {
+            Shape::Union(c) | Shape::Merge(c) | Shape::Intersection(c) | Shape::Difference(c) => {
+                Some(c)
+            }
+            _ => None,
+        }
+    }
+
+    pub fn children_mut(&mut self) -> Option<&mut Vec<Object>> {
+        match self {
+            Shape::Union(c) | Shape::Merge(c) | Shape::Intersection(c) | Shape::Difference(c) => {
+                Some(c)
+            }
+            _ => None,
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -32,6 +122,8 @@ pub struct Object {
     pub texture: Option<Texture>,
     pub interior: Option<Interior>,
     pub flags: ObjectFlags,
+    /// `clipped_by { ... }`: only the parts of the surface inside all of these remain.
+    pub clipped_by: Vec<Object>,
 }
 
 impl Object {
@@ -42,21 +134,26 @@ impl Object {
             texture: None,
             interior: None,
             flags: ObjectFlags::default(),
+            clipped_by: Vec::new(),
         }
     }
 
     /// Applies a world-space transform after everything already applied: to the shape,
-    /// to the texture attached so far, and to every CSG child (whose transforms are also in
-    /// world space). A texture attached later is not moved, as in POV-Ray.
+    /// to the texture attached so far, to every CSG child (whose transforms are also in
+    /// world space) and to the clipping objects. A texture attached later is not moved, as
+    /// in POV-Ray.
     pub fn transform_by(&mut self, t: &Transform) {
         self.transform = self.transform.then(t);
         if let Some(texture) = &mut self.texture {
             texture.transform_by(t);
         }
-        if let Shape::Union(children) = &mut self.shape {
+        if let Some(children) = self.shape.children_mut() {
             for child in children {
                 child.transform_by(t);
             }
+        }
+        for clip in &mut self.clipped_by {
+            clip.transform_by(t);
         }
     }
 }

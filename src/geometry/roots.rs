@@ -1,0 +1,182 @@
+//! Real roots of low-degree polynomials, robust enough for ray tracing: quadratics without
+//! cancellation, and higher degrees by isolating each root between the roots of the
+//! derivative (so every interval is monotone) and then bisecting with Newton steps.
+
+/// A handful of roots, sorted, without allocation.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Roots {
+    pub values: [f64; 4],
+    pub len: usize,
+}
+
+impl Roots {
+    pub fn push(&mut self, t: f64) {
+        if self.len < 4 {
+            self.values[self.len] = t;
+            self.len += 1;
+        }
+    }
+
+    pub fn as_slice(&self) -> &[f64] {
+        &self.values[..self.len]
+    }
+
+    pub fn sort(&mut self) {
+        let n = self.len;
+        self.values[..n].sort_by(f64::total_cmp);
+    }
+}
+
+/// Roots of a t^2 + b t + c, ordered; q = -(b + sign(b) sqrt(disc))/2 avoids cancellation.
+pub fn quadratic(a: f64, b: f64, c: f64) -> Roots {
+    let mut r = Roots::default();
+    if a == 0.0 {
+        if b != 0.0 {
+            r.push(-c / b);
+        }
+        return r;
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return r;
+    }
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    if q == 0.0 {
+        r.push(0.0);
+        r.push(0.0);
+        return r;
+    }
+    let (t0, t1) = (q / a, c / q);
+    r.push(t0.min(t1));
+    r.push(t0.max(t1));
+    r
+}
+
+fn eval(coef: &[f64], t: f64) -> f64 {
+    coef.iter().fold(0.0, |acc, &c| acc * t + c)
+}
+
+/// Roots in [lo, hi] of the polynomial with coefficients `coef` (highest degree first,
+/// degree at most 4).
+pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
+    // Drop leading zeros.
+    let start = coef.iter().position(|&c| c != 0.0).unwrap_or(coef.len());
+    let coef = &coef[start..];
+    let degree = coef.len().saturating_sub(1);
+    let mut out = Roots::default();
+    if degree == 0 {
+        return out;
+    }
+    if degree <= 2 {
+        let r = if degree == 2 {
+            quadratic(coef[0], coef[1], coef[2])
+        } else {
+            quadratic(0.0, coef[0], coef[1])
+        };
+        for &t in r.as_slice() {
+            if t >= lo && t <= hi {
+                out.push(t);
+            }
+        }
+        return out;
+    }
+    // Critical points split [lo, hi] into monotone pieces with at most one root each.
+    let mut derivative = [0.0; 4];
+    for (i, c) in coef[..degree].iter().enumerate() {
+        derivative[i] = c * (degree - i) as f64;
+    }
+    let critical = roots_in(&derivative[..degree], lo, hi);
+    let mut bounds = [lo; 6];
+    let mut n = 1;
+    for &c in critical.as_slice() {
+        if c > bounds[n - 1] {
+            bounds[n] = c;
+            n += 1;
+        }
+    }
+    bounds[n] = hi;
+    n += 1;
+    for w in bounds[..n].windows(2) {
+        if let Some(t) = monotone_root(coef, w[0], w[1]) {
+            if out.len == 0 || (t - out.values[out.len - 1]).abs() > 1e-12 * t.abs().max(1.0) {
+                out.push(t);
+            }
+        }
+    }
+    out
+}
+
+/// The root of a polynomial that is monotone on [a, b], if its sign changes there.
+fn monotone_root(coef: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
+    let mut fa = eval(coef, a);
+    let fb = eval(coef, b);
+    if fa == 0.0 {
+        return Some(a);
+    }
+    if fb == 0.0 {
+        return Some(b);
+    }
+    if fa.signum() == fb.signum() {
+        return None;
+    }
+    let degree = coef.len() - 1;
+    let mut t = 0.5 * (a + b);
+    for _ in 0..100 {
+        let f = eval(coef, t);
+        if f == 0.0 {
+            return Some(t);
+        }
+        if f.signum() == fa.signum() {
+            a = t;
+            fa = f;
+        } else {
+            b = t;
+        }
+        // A Newton step, kept only if it stays inside the bracket.
+        let df = coef[..degree]
+            .iter()
+            .enumerate()
+            .fold(0.0, |acc, (i, c)| acc * t + c * (degree - i) as f64);
+        let newton = t - f / df;
+        t = if df != 0.0 && newton > a && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if (b - a) <= 1e-15 * (a.abs() + b.abs()).max(1e-300) {
+            break;
+        }
+    }
+    Some(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quartic_with_four_roots() {
+        // (t-1)(t-2)(t-3)(t-4) = t^4 - 10t^3 + 35t^2 - 50t + 24
+        let r = roots_in(&[1.0, -10.0, 35.0, -50.0, 24.0], -10.0, 10.0);
+        assert_eq!(r.len, 4);
+        for (got, want) in r.as_slice().iter().zip([1.0, 2.0, 3.0, 4.0]) {
+            assert!((got - want).abs() < 1e-12, "{got} vs {want}");
+        }
+    }
+
+    #[test]
+    fn close_roots_and_ranges() {
+        // (t - 1)(t - 1.001)(t^2 + 1)
+        let p = [1.0, -2.001, 2.001, -2.001, 1.001];
+        let r = roots_in(&p, 0.0, 5.0);
+        assert_eq!(r.len, 2, "{r:?}");
+        assert!((r.values[0] - 1.0).abs() < 1e-9 && (r.values[1] - 1.001).abs() < 1e-9);
+        assert_eq!(roots_in(&p, 2.0, 5.0).len, 0);
+    }
+
+    #[test]
+    fn stable_quadratic() {
+        let r = quadratic(1.0, -1e8, 1.0);
+        assert!((r.values[0] - 1e-8).abs() < 1e-20);
+    }
+}

@@ -1,0 +1,299 @@
+//! Converged POV-Ray references, rendered by the installed `povray`.
+//!
+//! POV-Ray's anti-aliasing is adaptive, so its output is not a fixed box filter. A reference
+//! is instead rendered k times larger without anti-aliasing and averaged over k x k blocks:
+//! an exact box filter with k^2 regular samples per pixel. The same scene is also rendered
+//! at k/2, because r_k - r_k/2 bounds the reference's own quadrature error, which the
+//! statistics subtract (see `metrics`).
+//!
+//! POV-Ray 3.7.0.10's `+FE` output was checked to be linear half float (16-bit): a constant
+//! `rgb 0.123456` reads back as 0.12347 (the nearest half), not as its sRGB encoding, and
+//! `File_Gamma` does not change EXR output. No gamma option is needed.
+
+use super::StudyError;
+use super::tempdir::TempDir;
+use crate::output::{Image, read_exr, write_exr};
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+/// Largest supersampling factor accepted: 64 already means 4096 samples per pixel.
+pub const MAX_SUPERSAMPLE: u32 = 64;
+/// How many of POV-Ray's last output lines an error carries.
+const ERROR_LINES: usize = 25;
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReferenceRequest {
+    pub scene: PathBuf,
+    /// Size of the final (averaged) reference image.
+    pub width: u32,
+    pub height: u32,
+    /// k: the render is k times larger in each direction. Even and at least 2, so that the
+    /// k/2 companion exists.
+    pub supersample: u32,
+    /// Passed as `Declare=Name=Value`, for scenes parameterised by the study.
+    pub declares: Vec<(String, f64)>,
+    /// Extra include folders; the scene's own folder is always searched.
+    pub include_paths: Vec<PathBuf>,
+}
+
+impl ReferenceRequest {
+    pub fn new(scene: impl Into<PathBuf>, width: u32, height: u32, supersample: u32) -> Self {
+        ReferenceRequest {
+            scene: scene.into(),
+            width,
+            height,
+            supersample,
+            declares: Vec::new(),
+            include_paths: Vec::new(),
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reference {
+    /// The k-supersampled reference r.
+    pub full: Image,
+    /// The k/2-supersampled companion r2.
+    pub half: Image,
+    /// k.
+    pub supersample: u32,
+    /// Wall time of POV-Ray's k render, process start to exit (parsing included), for
+    /// speed charts.
+    pub povray_seconds: f64,
+}
+
+/// Renders `req` at k and at k/2 and box-filters both down to width x height.
+pub fn render_reference(req: &ReferenceRequest) -> Result<Reference, StudyError> {
+    validate(req)?;
+    let povray = find_povray()?;
+    let scene = std::fs::canonicalize(&req.scene).map_err(|source| StudyError::Io {
+        path: req.scene.clone(),
+        source,
+    })?;
+    if !scene.is_file() {
+        return Err(StudyError::InvalidRequest(format!(
+            "{} is not a file",
+            scene.display()
+        )));
+    }
+    let mut include_paths = Vec::new();
+    if let Some(folder) = scene.parent() {
+        include_paths.push(folder.to_path_buf());
+    }
+    for path in &req.include_paths {
+        include_paths.push(std::path::absolute(path).map_err(|source| StudyError::Io {
+            path: path.clone(),
+            source,
+        })?);
+    }
+    let dir = TempDir::new("reference").map_err(|source| StudyError::Io {
+        path: std::env::temp_dir(),
+        source,
+    })?;
+    let job = Job {
+        povray: &povray,
+        scene: &scene,
+        include_paths: &include_paths,
+        req,
+        dir: dir.path(),
+    };
+    let (full, povray_seconds) = job.render(req.supersample)?;
+    let (half, _) = job.render(req.supersample / 2)?;
+    Ok(Reference {
+        full,
+        half,
+        supersample: req.supersample,
+        povray_seconds,
+    })
+}
+
+/// Stores the k render as the main RGB image, the k/2 render as layer `half`, and k and
+/// the wall time as string attributes.
+pub fn write_reference(path: &Path, reference: &Reference) -> Result<(), StudyError> {
+    let seconds = format!("{}", reference.povray_seconds);
+    let supersample = reference.supersample.to_string();
+    write_exr(
+        path,
+        &reference.full,
+        &[("half", &reference.half)],
+        &[
+            ("povray_seconds", seconds.as_str()),
+            ("supersample", supersample.as_str()),
+        ],
+    )?;
+    Ok(())
+}
+
+pub fn read_reference(path: &Path) -> Result<Reference, StudyError> {
+    let file = read_exr(path)?;
+    let bad = |message: &str| StudyError::BadReferenceFile {
+        path: path.to_path_buf(),
+        message: message.to_string(),
+    };
+    let half = file
+        .layer("half")
+        .cloned()
+        .ok_or_else(|| bad("no `half` layer (the k/2 render)"))?;
+    let povray_seconds = file
+        .attribute("povray_seconds")
+        .and_then(|s| s.parse::<f64>().ok())
+        .ok_or_else(|| bad("no numeric `povray_seconds` attribute"))?;
+    let supersample = file
+        .attribute("supersample")
+        .and_then(|s| s.parse::<u32>().ok())
+        .ok_or_else(|| bad("no integer `supersample` attribute"))?;
+    Ok(Reference {
+        full: file.image,
+        half,
+        supersample,
+        povray_seconds,
+    })
+}
+
+/// The `povray` executable on PATH.
+pub fn find_povray() -> Result<PathBuf, StudyError> {
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    find_in_path("povray", &path).ok_or(StudyError::PovrayNotFound)
+}
+
+fn find_in_path(name: &str, path_var: &OsStr) -> Option<PathBuf> {
+    std::env::split_paths(path_var)
+        .filter(|dir| !dir.as_os_str().is_empty())
+        .map(|dir| dir.join(name))
+        .find(|candidate| is_executable(candidate))
+}
+
+#[cfg(unix)]
+fn is_executable(path: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::metadata(path)
+        .map(|m| m.is_file() && m.permissions().mode() & 0o111 != 0)
+        .unwrap_or(false)
+}
+
+#[cfg(not(unix))]
+fn is_executable(path: &Path) -> bool {
+    path.is_file()
+}
+
+fn validate(req: &ReferenceRequest) -> Result<(), StudyError> {
+    let invalid = |message: String| Err(StudyError::InvalidRequest(message));
+    if req.width == 0 || req.height == 0 {
+        return invalid(format!("size {}x{} is empty", req.width, req.height));
+    }
+    let k = req.supersample;
+    if k < 2 || !k.is_multiple_of(2) || k > MAX_SUPERSAMPLE {
+        return invalid(format!(
+            "supersample {k} must be even, from 2 to {MAX_SUPERSAMPLE} (the k/2 render must exist)"
+        ));
+    }
+    if req.width.checked_mul(k).is_none() || req.height.checked_mul(k).is_none() {
+        return invalid(format!(
+            "{}x{} at k = {k} is too large",
+            req.width, req.height
+        ));
+    }
+    for (name, value) in &req.declares {
+        let mut chars = name.chars();
+        let identifier = chars
+            .next()
+            .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if !identifier {
+            return invalid(format!("declare name {name:?} is not an identifier"));
+        }
+        if !value.is_finite() {
+            return invalid(format!("declare {name} = {value} is not finite"));
+        }
+    }
+    Ok(())
+}
+
+/// One reference's fixed inputs, shared by its k and k/2 renders.
+struct Job<'a> {
+    povray: &'a Path,
+    scene: &'a Path,
+    include_paths: &'a [PathBuf],
+    req: &'a ReferenceRequest,
+    dir: &'a Path,
+}
+
+impl Job<'_> {
+    /// Runs POV-Ray at `factor` times the size and returns the block-averaged image and the
+    /// wall time.
+    fn render(&self, factor: u32) -> Result<(Image, f64), StudyError> {
+        let (width, height) = (self.req.width * factor, self.req.height * factor);
+        let output_name = format!("render-{factor}.exr");
+        let mut command = Command::new(self.povray);
+        // POV-Ray's default I/O policy lets it write in its working directory, so it runs
+        // inside the temporary directory and writes there under a relative name.
+        command
+            .current_dir(self.dir)
+            .arg(format!("+I{}", self.scene.display()))
+            .arg(format!("+O{output_name}"))
+            .arg("+FE")
+            .arg(format!("+W{width}"))
+            .arg(format!("+H{height}"))
+            // No anti-aliasing, no display, no pause; no progress or statistics chatter
+            // (errors and warnings still arrive and go into the error message).
+            .args(["-A", "-D", "-P", "-GS", "-GR"]);
+        for path in self.include_paths {
+            command.arg(format!("+L{}", path.display()));
+        }
+        for (name, value) in &self.req.declares {
+            // Rust prints f64 without exponents and with enough digits to round-trip.
+            command.arg(format!("Declare={name}={value}"));
+        }
+        let start = Instant::now();
+        let output = command.output().map_err(|source| StudyError::Io {
+            path: self.povray.to_path_buf(),
+            source,
+        })?;
+        let seconds = start.elapsed().as_secs_f64();
+        let exr_path = self.dir.join(&output_name);
+        if !output.status.success() || !exr_path.is_file() {
+            return Err(StudyError::PovrayFailed {
+                scene: self.scene.to_path_buf(),
+                status: if output.status.success() {
+                    "no output file".to_string()
+                } else {
+                    output.status.to_string()
+                },
+                output: last_lines(&output.stdout, &output.stderr, ERROR_LINES),
+            });
+        }
+        let file = read_exr(&exr_path)?;
+        let expected = (width as usize, height as usize);
+        if (file.image.width, file.image.height) != expected {
+            return Err(StudyError::SizeMismatch {
+                what: format!("povray's output {}", exr_path.display()),
+                expected,
+                found: (file.image.width, file.image.height),
+            });
+        }
+        let image =
+            file.image
+                .downsample(factor as usize)
+                .ok_or_else(|| StudyError::InvalidImage {
+                    what: format!("povray's output {}", exr_path.display()),
+                })?;
+        Ok((image, seconds))
+    }
+}
+
+/// The last `count` non-empty lines of POV-Ray's output (it writes most to stderr).
+fn last_lines(stdout: &[u8], stderr: &[u8], count: usize) -> String {
+    let text = format!(
+        "{}\n{}",
+        String::from_utf8_lossy(stdout),
+        String::from_utf8_lossy(stderr)
+    );
+    let lines: Vec<&str> = text.lines().filter(|l| !l.trim().is_empty()).collect();
+    lines[lines.len().saturating_sub(count)..].join("\n")
+}
+
+#[cfg(test)]
+#[path = "reference_tests.rs"]
+mod tests;

@@ -1,0 +1,125 @@
+//! Every scene in scenes/ converges to POV-Ray 3.7's image.
+//!
+//! K replicates (fixed seeds) at N samples per pixel are compared with POV-Ray's converged
+//! reference (rendered 16x larger without anti-aliasing and block-averaged; the 8x render
+//! beside it bounds the reference's own error), following shared/testing-statistics.md:
+//! the noise-free bias sqrt(B) must be at most 0.005, no 8x8 tile may fail the tile test, and
+//! every pixel must be finite. The same test must catch a 0.01 offset and a half-pixel
+//! camera shift, or it would prove nothing.
+
+use std::path::{Path, PathBuf};
+
+use penumbra::lang::{LoadOptions, load_scene};
+use penumbra::output::Image;
+use penumbra::render::RenderOptions;
+use penumbra::scene::Scene;
+use penumbra::study::{self, SQRT_B_THRESHOLD, Verdict};
+
+const WIDTH: usize = 160;
+const HEIGHT: usize = 120;
+const REPLICATES: u64 = 4;
+const SAMPLES: u32 = 64;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn scenes() -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = std::fs::read_dir(root().join("scenes"))
+        .expect("scenes/ exists")
+        .map(|e| e.expect("readable entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "pov"))
+        .collect();
+    v.sort();
+    v
+}
+
+fn load(path: &Path) -> Scene {
+    let options = LoadOptions {
+        declares: Vec::new(),
+        include_paths: Vec::new(),
+        image_width: WIDTH as u32,
+        image_height: HEIGHT as u32,
+    };
+    match load_scene(path, &options) {
+        Ok(loaded) => loaded.scene,
+        Err(d) => panic!("{d}"),
+    }
+}
+
+fn replicates(scene: &Scene) -> Vec<Image> {
+    (0..REPLICATES)
+        .map(|k| {
+            let options = RenderOptions {
+                width: WIDTH,
+                height: HEIGHT,
+                samples_per_pixel: SAMPLES,
+                seed: 1000 + k,
+                ..RenderOptions::default()
+            };
+            penumbra::render_scene(scene, &options, &())
+                .expect("render")
+                .0
+        })
+        .collect()
+}
+
+fn reference(path: &Path) -> study::reference::Reference {
+    let stem = path.file_stem().expect("file name").to_string_lossy();
+    let file = root().join("tests/references").join(format!("{stem}.exr"));
+    study::read_reference(&file).unwrap_or_else(|e| {
+        panic!(
+            "{}: no usable reference ({e}); run tests/references/regenerate.sh",
+            path.display()
+        )
+    })
+}
+
+fn verdict(images: &[Image], reference: &study::reference::Reference) -> Verdict {
+    study::evaluate(images, &reference.full, &reference.half).expect("comparable images")
+}
+
+#[test]
+fn every_scene_converges_to_povray() {
+    let mut failures = Vec::new();
+    let all = scenes();
+    assert!(all.len() >= 4, "scenes/ should hold at least 4 scenes");
+    for path in &all {
+        let scene = load(path);
+        let reference = reference(path);
+        let images = replicates(&scene);
+        let v = verdict(&images, &reference);
+        println!("{}: {v}", path.display());
+        if !v.passes(SQRT_B_THRESHOLD) {
+            failures.push(format!("{}: {v}", path.display()));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The comparison must be able to fail: an offset of 0.01 on every pixel, and the camera
+/// moved by half a pixel, are both caught on a scene with edges and texture.
+#[test]
+fn the_test_catches_an_offset_and_a_half_pixel_shift() {
+    let path = root().join("scenes/checker.pov");
+    let mut scene = load(&path);
+    let reference = reference(&path);
+    let images = replicates(&scene);
+    let honest = verdict(&images, &reference);
+    assert!(honest.passes(SQRT_B_THRESHOLD), "unshifted: {honest}");
+
+    let offset: Vec<Image> = images.iter().map(|im| im.map(|v| v + 0.01)).collect();
+    let v = verdict(&offset, &reference);
+    println!("offset 0.01: {v}");
+    assert!(!v.passes(SQRT_B_THRESHOLD), "an offset of 0.01 passed: {v}");
+
+    let camera = &mut scene.camera;
+    camera.direction += camera.right * (0.5 / WIDTH as f64);
+    let shifted = replicates(&scene);
+    let v = verdict(&shifted, &reference);
+    println!("half-pixel shift: {v}");
+    assert!(
+        !v.passes(SQRT_B_THRESHOLD),
+        "a half-pixel shift passed: {v}"
+    );
+}

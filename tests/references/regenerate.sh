@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Regenerates the POV-Ray references for every scene in scenes/: 160x120, k = 16 (and the
+# k = 8 render inside the same file). Needs the installed povray.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+cargo build --release --quiet
+for scene in scenes/*.pov; do
+  name=$(basename "$scene" .pov)
+  ./target/release/penumbra reference "$scene" --output "tests/references/$name.exr" \
+    --width 160 --height 120 --supersample 16
+done
