@@ -13,7 +13,11 @@ use penumbra::render::{Progress, RenderOptions};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
 
 #[derive(Parser)]
-#[command(name = "penumbra", version, about = "A stochastic ray tracer for POV-Ray scenes")]
+#[command(
+    name = "penumbra",
+    version,
+    about = "A stochastic ray tracer for POV-Ray scenes"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -100,7 +104,10 @@ fn parse_declare(s: &str) -> Result<(String, f64), String> {
         .parse()
         .map_err(|_| format!("`{value}` is not a number"))?;
     let name = name.trim();
-    let valid = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+    let valid = name
+        .chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
         && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
     if !valid {
         return Err(format!("`{name}` is not an identifier"));

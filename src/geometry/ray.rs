@@ -20,7 +20,7 @@ impl Ray {
 /// point grows with its magnitude, so a single fixed epsilon breaks either for tiny or for
 /// huge scenes; this bound follows the point's magnitude instead.
 pub fn offset_scale(p: DVec3) -> f64 {
-    (p.abs().max_element() + 1e-3) * 1e-9
+    (p.abs().max_element() + 1e-3) * 1e-11
 }
 
 /// Moves `p` off the surface with geometric normal `n`, to the side `towards` points to.
