@@ -89,7 +89,13 @@ fn every_scene_converges_to_povray() {
         let reference = reference(path);
         let images = replicates(&scene);
         let v = verdict(&images, &reference);
-        println!("{}: {v}", path.display());
+        println!(
+            "{}: {v}; B = {:.3e} (cross term {:.3e}, reference term {:.3e})",
+            path.display(),
+            v.bias.b,
+            v.bias.cross,
+            v.bias.reference_term
+        );
         if !v.passes(SQRT_B_THRESHOLD) {
             failures.push(format!("{}: {v}", path.display()));
         }

@@ -2,8 +2,8 @@
 
 mod aabb;
 mod bvh;
-mod roots;
 mod ray;
+mod roots;
 mod shapes;
 mod transform;
 mod world;

@@ -97,10 +97,10 @@ pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
     bounds[n] = hi;
     n += 1;
     for w in bounds[..n].windows(2) {
-        if let Some(t) = monotone_root(coef, w[0], w[1]) {
-            if out.len == 0 || (t - out.values[out.len - 1]).abs() > 1e-12 * t.abs().max(1.0) {
-                out.push(t);
-            }
+        if let Some(t) = monotone_root(coef, w[0], w[1])
+            && (out.len == 0 || (t - out.values[out.len - 1]).abs() > 1e-12 * t.abs().max(1.0))
+        {
+            out.push(t);
         }
     }
     out

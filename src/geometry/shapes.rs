@@ -208,8 +208,7 @@ impl ShapeKind {
                     if p.z.abs() < side * 0.5 || (p.z <= 1e-9 && radial < r0.abs()) {
                         return -DVec3::Z;
                     }
-                    if (p.z - 1.0).abs() < side * 0.5 || (p.z >= 1.0 - 1e-9 && radial < r1.abs())
-                    {
+                    if (p.z - 1.0).abs() < side * 0.5 || (p.z >= 1.0 - 1e-9 && radial < r1.abs()) {
                         return DVec3::Z;
                     }
                 }
@@ -482,9 +481,15 @@ mod tests {
     fn sphere_hit_from_outside_and_inside() {
         let s = sphere(DVec3::new(0.0, 0.0, 5.0), 1.0);
         assert_eq!(hit(&s, &Ray::new(DVec3::ZERO, DVec3::Z)), Some(4.0));
-        assert_eq!(hit(&s, &Ray::new(DVec3::new(0.0, 0.0, 5.0), DVec3::Z)), Some(1.0));
+        assert_eq!(
+            hit(&s, &Ray::new(DVec3::new(0.0, 0.0, 5.0), DVec3::Z)),
+            Some(1.0)
+        );
         assert_eq!(hit(&s, &Ray::new(DVec3::ZERO, -DVec3::Z)), None);
-        assert_eq!(s.intersect(&Ray::new(DVec3::ZERO, DVec3::Z), 3.9, &no_tables()), None);
+        assert_eq!(
+            s.intersect(&Ray::new(DVec3::ZERO, DVec3::Z), 3.9, &no_tables()),
+            None
+        );
     }
 
     #[test]
@@ -520,7 +525,10 @@ mod tests {
         let ray = Ray::new(DVec3::new(0.5, 0.0, -5.0), DVec3::Z);
         let t = hit(&b, &ray).unwrap();
         assert_eq!(t, 4.0);
-        assert_eq!(b.normal(ray.at(t), &no_tables()), DVec3::new(0.0, 0.0, -1.0));
+        assert_eq!(
+            b.normal(ray.at(t), &no_tables()),
+            DVec3::new(0.0, 0.0, -1.0)
+        );
         assert!(b.inside(DVec3::ZERO, &no_tables()) && !b.inside(DVec3::splat(2.0), &no_tables()));
         let p = ShapeKind::Plane {
             normal: DVec3::Y,
@@ -565,7 +573,10 @@ mod tests {
             hole: 1.0,
         };
         assert!(hit(&disc, &Ray::new(DVec3::new(0.5, 0.0, -1.0), DVec3::Z)).is_none());
-        assert_eq!(hit(&disc, &Ray::new(DVec3::new(1.5, 0.0, -1.0), DVec3::Z)), Some(1.0));
+        assert_eq!(
+            hit(&disc, &Ray::new(DVec3::new(1.5, 0.0, -1.0), DVec3::Z)),
+            Some(1.0)
+        );
     }
 
     #[test]
@@ -574,13 +585,19 @@ mod tests {
             major: 2.0,
             minor: 0.5,
         };
-        let r = torus.all_hits(&Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X), &no_tables());
+        let r = torus.all_hits(
+            &Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X),
+            &no_tables(),
+        );
         assert_eq!(r.len, 4);
         for (got, want) in r.as_slice().iter().zip([7.5, 8.5, 11.5, 12.5]) {
             assert!((got - want).abs() < 1e-9, "{got} vs {want}");
         }
         // Far away and with a scaled direction.
-        let r = torus.all_hits(&Ray::new(DVec3::new(-1e6, 0.0, 0.0), DVec3::X * 2.0), &no_tables());
+        let r = torus.all_hits(
+            &Ray::new(DVec3::new(-1e6, 0.0, 0.0), DVec3::X * 2.0),
+            &no_tables(),
+        );
         assert_eq!(r.len, 4);
         assert!((r.values[0] - (1e6 - 2.5) / 2.0).abs() < 1e-6);
         assert!(torus.inside(DVec3::new(2.0, 0.0, 0.0), &no_tables()));
@@ -594,7 +611,11 @@ mod tests {
             ..ShapeTables::default()
         };
         let q = ShapeKind::Quadric(0);
-        let t = q.intersect(&Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z), f64::INFINITY, &tables);
+        let t = q.intersect(
+            &Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z),
+            f64::INFINITY,
+            &tables,
+        );
         assert_eq!(t, Some(4.0));
         assert!(q.inside(DVec3::ZERO, &tables));
     }
@@ -628,12 +649,23 @@ mod tests {
         let tri = ShapeKind::Triangle(0);
         let ray = Ray::new(DVec3::new(0.25, 0.25, -1.0), DVec3::Z);
         assert_eq!(tri.intersect(&ray, f64::INFINITY, &tables), Some(1.0));
-        assert!(tri.intersect(&Ray::new(DVec3::new(0.75, 0.75, -1.0), DVec3::Z), f64::INFINITY, &tables).is_none());
+        assert!(
+            tri.intersect(
+                &Ray::new(DVec3::new(0.75, 0.75, -1.0), DVec3::Z),
+                f64::INFINITY,
+                &tables
+            )
+            .is_none()
+        );
         let n = tri.shading_normal(DVec3::new(0.0, 0.5, 0.0), &tables);
         assert!((n - DVec3::new(0.5, 0.0, 0.5)).length() < 1e-12, "{n}");
         let poly = ShapeKind::Polygon(0);
         let through = |x: f64, y: f64| {
-            poly.intersect(&Ray::new(DVec3::new(x, y, -1.0), DVec3::Z), f64::INFINITY, &tables)
+            poly.intersect(
+                &Ray::new(DVec3::new(x, y, -1.0), DVec3::Z),
+                f64::INFINITY,
+                &tables,
+            )
         };
         assert_eq!(through(0.5, 0.5), Some(1.0));
         assert_eq!(through(2.0, 2.0), None);

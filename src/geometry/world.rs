@@ -220,7 +220,9 @@ impl World {
         }
         let mut children = node.children.iter().map(|&c| self.item_bounds(c));
         match node.op {
-            CsgOp::Union | CsgOp::Merge => children.try_fold(Aabb::EMPTY, |acc, b| Some(acc.union(&b?))),
+            CsgOp::Union | CsgOp::Merge => {
+                children.try_fold(Aabb::EMPTY, |acc, b| Some(acc.union(&b?)))
+            }
             CsgOp::Difference => children.next().flatten(),
             CsgOp::Intersection | CsgOp::Clip => {
                 // Each bounded child limits the whole; unbounded ones do not.
@@ -257,7 +259,9 @@ impl World {
             if p.flags & skip != 0 {
                 return None;
             }
-            let t = p.shape.intersect(&self.local_ray(p, ray), t_max, &self.tables)?;
+            let t = p
+                .shape
+                .intersect(&self.local_ray(p, ray), t_max, &self.tables)?;
             return Some(Hit {
                 t,
                 primitive: item,
@@ -316,7 +320,9 @@ impl World {
                 let keep = match node.op {
                     CsgOp::Union => true,
                     CsgOp::Merge => others.into_iter().all(|(_, inside)| !inside),
-                    CsgOp::Intersection | CsgOp::Clip => others.into_iter().all(|(_, inside)| inside),
+                    CsgOp::Intersection | CsgOp::Clip => {
+                        others.into_iter().all(|(_, inside)| inside)
+                    }
                     CsgOp::Difference => others
                         .into_iter()
                         .all(|(j, inside)| if j == 0 { inside } else { !inside }),
@@ -461,7 +467,13 @@ mod tests {
         // Along the x axis from the left: the small sphere's far side at x = -0.5.
         let t = first_hit(&w, DVec3::new(-5.0, 0.0, 0.0), DVec3::X).unwrap();
         assert!((t - 4.5).abs() < 1e-12, "{t}");
-        let hit = w.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), f64::INFINITY, 0).unwrap();
+        let hit = w
+            .intersect(
+                &Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X),
+                f64::INFINITY,
+                0,
+            )
+            .unwrap();
         // The cut surface's outward normal points into the hole (towards -x).
         let s = w.surface(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), &hit);
         assert!(s.normal.x < -0.99, "{:?}", s.normal);

@@ -1,1 +1,162 @@
-//! lang
+//! The scene language: POV-Ray 3.7 scene files to the [`crate::scene`] model.
+//!
+//! Stages: [`parse`] turns text into tokens (nom), [`syntax`] defines them with their spans,
+//! `eval` runs directives and macros while reading objects, textures and settings into a
+//! [`Scene`](crate::scene::Scene), and [`diagnostics`] prints errors with file, line,
+//! column and a caret. All file access goes through [`World`], so tests can use files held
+//! in memory.
+
+pub mod diagnostics;
+mod eval;
+pub mod parse;
+pub mod syntax;
+
+#[cfg(test)]
+mod tests;
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+pub use diagnostics::{Diagnostic, Severity, Span};
+
+/// Settings from the command line that the scene can see.
+#[derive(Clone, Debug)]
+pub struct LoadOptions {
+    /// `--declare NAME=VALUE`, defined before the scene is read.
+    pub declares: Vec<(String, f64)>,
+    pub include_paths: Vec<PathBuf>,
+    /// For the `image_width` / `image_height` identifiers.
+    pub image_width: u32,
+    pub image_height: u32,
+}
+
+/// 800 x 600 is what the installed POV-Ray 3.7 renders without `+W`/`+H`.
+impl Default for LoadOptions {
+    fn default() -> Self {
+        LoadOptions {
+            declares: Vec::new(),
+            include_paths: Vec::new(),
+            image_width: 800,
+            image_height: 600,
+        }
+    }
+}
+
+/// A scene that was read, with the warnings met on the way.
+#[derive(Clone, Debug)]
+pub struct Loaded {
+    pub scene: crate::scene::Scene,
+    pub warnings: Vec<Diagnostic>,
+}
+
+/// Where include files come from. One place decides what can be read, and tests substitute
+/// files held in memory.
+pub trait World {
+    fn read(&self, path: &Path) -> std::io::Result<String>;
+    fn exists(&self, path: &Path) -> bool;
+}
+
+/// The real file system.
+pub struct FileSystem;
+
+impl World for FileSystem {
+    fn read(&self, path: &Path) -> std::io::Result<String> {
+        let bytes = std::fs::read(path)?;
+        // Scene files are often Latin-1; keep going rather than refusing them.
+        Ok(String::from_utf8_lossy(&bytes).into_owned())
+    }
+
+    fn exists(&self, path: &Path) -> bool {
+        path.is_file()
+    }
+}
+
+/// Files held in memory, looked up by path; for tests.
+#[derive(Default, Clone, Debug)]
+pub struct MemoryWorld {
+    pub files: HashMap<PathBuf, String>,
+}
+
+impl World for MemoryWorld {
+    fn read(&self, path: &Path) -> std::io::Result<String> {
+        self.files
+            .get(path)
+            .cloned()
+            .ok_or_else(|| std::io::Error::new(std::io::ErrorKind::NotFound, "no such file"))
+    }
+
+    fn exists(&self, path: &Path) -> bool {
+        self.files.contains_key(path)
+    }
+}
+
+/// Reads a scene file and everything it includes.
+pub fn load_scene(path: &Path, options: &LoadOptions) -> Result<Loaded, Diagnostic> {
+    let source = FileSystem.read(path).map_err(|e| {
+        Diagnostic::error(
+            Span::DETACHED,
+            format!("cannot read \"{}\": {e}", path.display()),
+        )
+    })?;
+    load_with_world(&path.display().to_string(), &source, options, &FileSystem)
+}
+
+/// Reads a scene held in memory; includes are still searched on disk.
+pub fn load_scene_source(
+    name: &str,
+    source: &str,
+    options: &LoadOptions,
+) -> Result<Loaded, Diagnostic> {
+    load_with_world(name, source, options, &FileSystem)
+}
+
+/// Stack for the evaluator's thread: deeply nested scenes recurse, and the nesting limit
+/// (`eval::MAX_DEPTH`) is set so this is always enough, even in debug builds.
+const EVAL_STACK_BYTES: usize = 256 << 20;
+
+/// Reads a scene with includes resolved through `world`.
+pub fn load_with_world(
+    name: &str,
+    source: &str,
+    options: &LoadOptions,
+    world: &(dyn World + Sync),
+) -> Result<Loaded, Diagnostic> {
+    std::thread::scope(|s| {
+        let handle = std::thread::Builder::new()
+            .name("penumbra-lang".into())
+            .stack_size(EVAL_STACK_BYTES)
+            .spawn_scoped(s, || evaluate(name, source, options, world));
+        match handle {
+            Ok(h) => h.join().unwrap_or_else(|_| {
+                Err(Diagnostic::error(
+                    Span::DETACHED,
+                    "internal error: the scene reader crashed",
+                ))
+            }),
+            // No thread (resource limits): read on this one.
+            Err(_) => evaluate(name, source, options, world),
+        }
+    })
+}
+
+fn evaluate(
+    name: &str,
+    source: &str,
+    options: &LoadOptions,
+    world: &dyn World,
+) -> Result<Loaded, Diagnostic> {
+    let mut ev = eval::Evaluator::new(
+        world,
+        options.include_paths.clone(),
+        options.image_width,
+        options.image_height,
+    );
+    for (name, value) in &options.declares {
+        ev.declare_global(name, eval::value::Value::Float(*value));
+    }
+    ev.run(name, source)?;
+    Ok(Loaded {
+        scene: std::mem::take(&mut ev.scene),
+        warnings: std::mem::take(&mut ev.warnings),
+    })
+}

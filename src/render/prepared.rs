@@ -70,7 +70,7 @@ fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
 fn axis_frame(from: DVec3, to: DVec3) -> Option<Transform> {
     let axis = to - from;
     let len = axis.length();
-    if !(len > 0.0) || !len.is_finite() {
+    if len.is_nan() || len <= 0.0 || !len.is_finite() {
         return None;
     }
     let w = axis / len;
@@ -119,7 +119,17 @@ impl Builder {
                 };
                 let items: Vec<Item> = children
                     .iter()
-                    .filter_map(|c| self.object(c, texture, ObjectFlags { inverse: false, ..f }, false))
+                    .filter_map(|c| {
+                        self.object(
+                            c,
+                            texture,
+                            ObjectFlags {
+                                inverse: false,
+                                ..f
+                            },
+                            false,
+                        )
+                    })
                     .collect();
                 if items.is_empty() {
                     return None;
@@ -148,8 +158,7 @@ impl Builder {
                     None => object.transform,
                 };
                 let material = self.material(texture, f);
-                self.world
-                    .primitive(kind, &transform, material, mask(f))
+                self.world.primitive(kind, &transform, material, mask(f))
             }
         };
         let item = if clipped {
@@ -344,8 +353,12 @@ fn polygon(points: &[DVec3]) -> Option<(PolygonData, Transform)> {
     if loops.is_empty() {
         return None;
     }
-    let lo = kept.iter().fold(DVec2::splat(f64::INFINITY), |a, p| a.min(*p));
-    let hi = kept.iter().fold(DVec2::splat(f64::NEG_INFINITY), |a, p| a.max(*p));
+    let lo = kept
+        .iter()
+        .fold(DVec2::splat(f64::INFINITY), |a, p| a.min(*p));
+    let hi = kept
+        .iter()
+        .fold(DVec2::splat(f64::NEG_INFINITY), |a, p| a.max(*p));
     Some((
         PolygonData {
             points: kept,

@@ -26,7 +26,7 @@ impl PixelSampler {
         let spp = samples_per_pixel.max(1);
         let nx = (1..=spp)
             .take_while(|d| d * d <= spp)
-            .filter(|d| spp % d == 0)
+            .filter(|d| spp.is_multiple_of(*d))
             .last()
             .unwrap_or(1);
         PixelSampler {

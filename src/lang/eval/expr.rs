@@ -1,0 +1,894 @@
+//! Expressions with POV-Ray's precedence (loosest first): `? :`, `|`, `&`, comparisons,
+//! `+ -`, `* /`, unary `- + !`, then `.x`-style components and `[i]` indexing.
+//! Colours are 5-vectors, so `White * 0.3` and `rgb 1 * 0.5` are ordinary arithmetic.
+
+use std::rc::Rc;
+
+use glam::{DMat3, DVec3};
+
+use super::super::diagnostics::Span;
+use super::super::syntax::{Punct, Token, TokenKind};
+use super::Evaluator;
+use super::value::{BinOp, Value, Vector, arith, negate};
+use crate::lang::diagnostics::Diagnostic;
+use crate::scene::Transform;
+
+type R<T> = Result<T, Diagnostic>;
+
+/// Values within this of zero count as false, as in POV-Ray.
+const EPSILON: f64 = 1e-10;
+
+impl Evaluator<'_> {
+    /// A full expression of any type.
+    pub(super) fn expr(&mut self) -> R<(Value, Span)> {
+        let start = self.peek()?.span;
+        self.enter(start)?;
+        let r = self.ternary();
+        self.leave();
+        r
+    }
+
+    pub(super) fn float(&mut self) -> R<f64> {
+        let (v, span) = self.expr()?;
+        self.to_float(&v, span)
+    }
+
+    pub(super) fn vector3(&mut self) -> R<DVec3> {
+        let (v, span) = self.expr()?;
+        self.to_vec3(&v, span)
+    }
+
+    pub(super) fn to_float(&self, v: &Value, span: Span) -> R<f64> {
+        match v {
+            Value::Float(f) => Ok(*f),
+            other => Err(self.err(
+                span,
+                format!("expected a float, found {}", other.kind_name()),
+            )),
+        }
+    }
+
+    pub(super) fn to_vec3(&self, v: &Value, span: Span) -> R<DVec3> {
+        match v {
+            Value::Float(f) => Ok(DVec3::splat(*f)),
+            Value::Vector(v) => Ok(v.xyz()),
+            Value::Colour(c) => Ok(DVec3::new(c[0], c[1], c[2])),
+            other => Err(self.err(
+                span,
+                format!("expected a vector, found {}", other.kind_name()),
+            )),
+        }
+    }
+
+    /// A float where a colour is expected fills r, g and b; a 4- or 5-vector also gives
+    /// filter and transmit.
+    pub(super) fn to_colour(&self, v: &Value, span: Span) -> R<[f64; 5]> {
+        match v {
+            Value::Float(f) => Ok([*f, *f, *f, 0.0, 0.0]),
+            Value::Vector(v) => {
+                let mut c = [0.0; 5];
+                c[..v.len as usize].copy_from_slice(&v.c[..v.len as usize]);
+                Ok(c)
+            }
+            Value::Colour(c) => Ok(*c),
+            other => Err(self.err(
+                span,
+                format!("expected a colour, found {}", other.kind_name()),
+            )),
+        }
+    }
+
+    pub(super) fn truthy(&self, v: &Value, span: Span) -> R<bool> {
+        Ok(self.to_float(v, span)?.abs() > EPSILON)
+    }
+
+    fn ternary(&mut self) -> R<(Value, Span)> {
+        let (c, span) = self.or()?;
+        if self.eat_operator(Punct::Question)? {
+            let cond = self.truthy(&c, span)?;
+            let (a, sa) = self.expr()?;
+            self.expect(Punct::Colon, "in `? :`")?;
+            let (b, sb) = self.expr()?;
+            return Ok(if cond {
+                (a, span.join(sa))
+            } else {
+                (b, span.join(sb))
+            });
+        }
+        Ok((c, span))
+    }
+
+    fn or(&mut self) -> R<(Value, Span)> {
+        let (mut a, mut span) = self.and()?;
+        while self.eat_operator(Punct::Pipe)? {
+            let (b, sb) = self.and()?;
+            let r = self.truthy(&a, span)? || self.truthy(&b, sb)?;
+            a = Value::Float(f64::from(u8::from(r)));
+            span = span.join(sb);
+        }
+        Ok((a, span))
+    }
+
+    fn and(&mut self) -> R<(Value, Span)> {
+        let (mut a, mut span) = self.comparison()?;
+        while self.eat_operator(Punct::Amp)? {
+            let (b, sb) = self.comparison()?;
+            let r = self.truthy(&a, span)? && self.truthy(&b, sb)?;
+            a = Value::Float(f64::from(u8::from(r)));
+            span = span.join(sb);
+        }
+        Ok((a, span))
+    }
+
+    fn comparison(&mut self) -> R<(Value, Span)> {
+        let (mut a, mut span) = self.additive()?;
+        loop {
+            let tok = self.peek_operator()?;
+            let TokenKind::Punct(p) = tok.kind else {
+                break;
+            };
+            if !matches!(
+                p,
+                Punct::Lt | Punct::Le | Punct::Eq | Punct::Ne | Punct::Ge | Punct::Gt
+            ) || (p == Punct::Gt && self.in_vector)
+                // `box { <a> <b> }`: a `<` after a vector starts the next vector.
+                || (p == Punct::Lt && !matches!(a, Value::Float(_)))
+            {
+                break;
+            }
+            self.next()?;
+            let (b, sb) = self.additive()?;
+            let x = self.to_float(&a, span)?;
+            let y = self.to_float(&b, sb)?;
+            let r = match p {
+                Punct::Lt => x < y,
+                Punct::Le => x <= y,
+                Punct::Eq => (x - y).abs() <= EPSILON,
+                Punct::Ne => (x - y).abs() > EPSILON,
+                Punct::Ge => x >= y,
+                _ => x > y,
+            };
+            a = Value::Float(f64::from(u8::from(r)));
+            span = span.join(sb);
+        }
+        Ok((a, span))
+    }
+
+    pub(super) fn additive(&mut self) -> R<(Value, Span)> {
+        let (mut a, mut span) = self.multiplicative()?;
+        loop {
+            let tok = self.peek_operator()?;
+            let op = if tok.is_punct(Punct::Plus) {
+                BinOp::Add
+            } else if tok.is_punct(Punct::Minus) {
+                BinOp::Sub
+            } else {
+                break;
+            };
+            self.next()?;
+            let (b, sb) = self.multiplicative()?;
+            a = arith(op, &a, &b).map_err(|m| self.err(tok.span, m))?;
+            span = span.join(sb);
+        }
+        Ok((a, span))
+    }
+
+    fn multiplicative(&mut self) -> R<(Value, Span)> {
+        let (mut a, mut span) = self.unary()?;
+        loop {
+            let tok = self.peek_operator()?;
+            let op = if tok.is_punct(Punct::Star) {
+                BinOp::Mul
+            } else if tok.is_punct(Punct::Slash) {
+                BinOp::Div
+            } else {
+                break;
+            };
+            self.next()?;
+            let (b, sb) = self.unary()?;
+            a = arith(op, &a, &b).map_err(|m| self.err(tok.span, m))?;
+            span = span.join(sb);
+        }
+        Ok((a, span))
+    }
+
+    fn unary(&mut self) -> R<(Value, Span)> {
+        let tok = self.peek()?;
+        if tok.is_punct(Punct::Minus) || tok.is_punct(Punct::Plus) || tok.is_punct(Punct::Bang) {
+            self.next()?;
+            self.enter(tok.span)?;
+            let r = self.unary();
+            self.leave();
+            let (v, span) = r?;
+            let span = tok.span.join(span);
+            let v = if tok.is_punct(Punct::Minus) {
+                negate(&v).map_err(|m| self.err(span, m))?
+            } else if tok.is_punct(Punct::Bang) {
+                Value::Float(f64::from(u8::from(!self.truthy(&v, span)?)))
+            } else {
+                v
+            };
+            return Ok((v, span));
+        }
+        self.postfix()
+    }
+
+    fn postfix(&mut self) -> R<(Value, Span)> {
+        let (mut v, mut span) = self.primary()?;
+        loop {
+            let tok = self.peek_operator()?;
+            if tok.is_punct(Punct::Dot) {
+                self.next()?;
+                let name = self.next()?;
+                let Some(field) = name.ident() else {
+                    return Err(self.expected("a component name like `x` after `.`", &name));
+                };
+                span = span.join(name.span);
+                v = self.component(&v, field, span)?;
+            } else if tok.is_punct(Punct::LBracket) && matches!(v, Value::Array(_)) {
+                v = self.index_array(&v)?;
+            } else {
+                break;
+            }
+        }
+        Ok((v, span))
+    }
+
+    fn component(&self, v: &Value, field: &str, span: Span) -> R<Value> {
+        let (c, colour) = match v {
+            Value::Vector(v) => (v.c, false),
+            Value::Colour(c) => (*c, true),
+            Value::Float(f) => ([*f; 5], false),
+            other => {
+                return Err(self.err(
+                    span,
+                    format!(
+                        "`.{field}` needs a vector or colour, found {}",
+                        other.kind_name()
+                    ),
+                ));
+            }
+        };
+        let i = match field {
+            "x" | "u" | "red" => 0,
+            "y" | "v" | "green" => 1,
+            "z" | "blue" => 2,
+            "t" if !colour => 3,
+            "filter" | "f" => 3,
+            "transmit" | "t" => 4,
+            "gray" | "grey" => {
+                return Ok(Value::Float(0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]));
+            }
+            other => return Err(self.err(span, format!("unknown component `.{other}`"))),
+        };
+        Ok(Value::Float(c[i]))
+    }
+
+    fn primary(&mut self) -> R<(Value, Span)> {
+        let tok = self.peek()?;
+        match &tok.kind {
+            TokenKind::Number(n) => {
+                self.next()?;
+                Ok((Value::Float(*n), tok.span))
+            }
+            TokenKind::Str(s) => {
+                self.next()?;
+                Ok((Value::Str(s.clone()), tok.span))
+            }
+            TokenKind::Punct(Punct::LParen) => {
+                self.next()?;
+                let saved = std::mem::replace(&mut self.in_vector, false);
+                let r = self.expr();
+                self.in_vector = saved;
+                let (v, _) = r?;
+                let close = self.expect(Punct::RParen, "to close the parenthesis")?;
+                Ok((v, tok.span.join(close.span)))
+            }
+            TokenKind::Punct(Punct::Lt) => self.vector_literal(),
+            TokenKind::Ident(name) => {
+                let name = name.clone();
+                self.ident_value(&tok, &name)
+            }
+            _ => Err(self.expected("an expression", &tok)),
+        }
+    }
+
+    fn vector_literal(&mut self) -> R<(Value, Span)> {
+        let open = self.next()?;
+        self.enter(open.span)?;
+        let saved = std::mem::replace(&mut self.in_vector, true);
+        let r = self.vector_items();
+        self.in_vector = saved;
+        self.leave();
+        let (c, len) = r?;
+        let close = self.expect(Punct::Gt, "to close the vector")?;
+        Ok((Value::Vector(Vector { c, len }), open.span.join(close.span)))
+    }
+
+    fn vector_items(&mut self) -> R<([f64; 5], u8)> {
+        let mut c = [0.0; 5];
+        let mut len = 0u8;
+        loop {
+            let (v, span) = self.ternary()?;
+            if len >= 5 {
+                return Err(self.err(span, "a vector has at most 5 components"));
+            }
+            c[len as usize] = self.to_float(&v, span)?;
+            len += 1;
+            // A trailing comma is allowed: `<1, 2, 3,>`.
+            if self.eat(Punct::Comma)? {
+                if self.peek()?.is_punct(Punct::Gt) {
+                    break;
+                }
+                continue;
+            }
+            // Old scenes separate components with spaces only: `<0 20 0>`.
+            if self.peek()?.is_punct(Punct::Gt)
+                || !matches!(
+                    self.peek()?.kind,
+                    TokenKind::Number(_) | TokenKind::Ident(_) | TokenKind::Punct(Punct::LParen)
+                )
+            {
+                break;
+            }
+        }
+        if len < 2 {
+            let tok = self.peek()?;
+            return Err(self.expected("`,` (a vector has at least 2 components)", &tok));
+        }
+        Ok((c, len))
+    }
+
+    fn ident_value(&mut self, tok: &Token, name: &str) -> R<(Value, Span)> {
+        let span = tok.span;
+        let constant = |f: f64| Some(Value::Float(f));
+        let vec3 = |x: f64, y: f64, z: f64| Some(Value::Vector(Vector::new3(DVec3::new(x, y, z))));
+        let value = match name {
+            "pi" => constant(std::f64::consts::PI),
+            "true" | "yes" | "on" => constant(1.0),
+            "false" | "no" | "off" => constant(0.0),
+            "x" => vec3(1.0, 0.0, 0.0),
+            "y" => vec3(0.0, 1.0, 0.0),
+            "z" => vec3(0.0, 0.0, 1.0),
+            "t" => Some(Value::Vector(Vector {
+                c: [0.0, 0.0, 0.0, 1.0, 0.0],
+                len: 4,
+            })),
+            "u" => Some(Value::Vector(Vector {
+                c: [1.0, 0.0, 0.0, 0.0, 0.0],
+                len: 2,
+            })),
+            "v" => Some(Value::Vector(Vector {
+                c: [0.0, 1.0, 0.0, 0.0, 0.0],
+                len: 2,
+            })),
+            "image_width" => constant(f64::from(self.image_width)),
+            "image_height" => constant(f64::from(self.image_height)),
+            "clock" | "clock_delta" | "initial_clock" | "frame_number" | "clock_on" => {
+                constant(0.0)
+            }
+            // No animation: one frame, clock from 0 to 1.
+            "final_clock" | "initial_frame" | "final_frame" => constant(1.0),
+            "version" => constant(self.scene.version),
+            _ => None,
+        };
+        if let Some(v) = value {
+            self.next()?;
+            return Ok((v, span));
+        }
+        if super::keywords::is_colour_keyword(name) {
+            let (c, span) = self.colour()?;
+            return Ok((Value::Colour(c), span));
+        }
+        if let Some(v) = self.lookup(name) {
+            let v = v.clone();
+            self.next()?;
+            return Ok((v, span));
+        }
+        if super::keywords::is_function(name) {
+            self.next()?;
+            return self.call_function(tok, name);
+        }
+        if super::keywords::is_keyword(name) {
+            if super::keywords::is_known_unsupported_function(name) {
+                return Err(self.unsupported(tok, name));
+            }
+            return Err(self.expected("an expression", tok));
+        }
+        Err(self.unknown_identifier(tok, name))
+    }
+
+    /// `color ...`: an optional `color` keyword, then `rgb`-style keywords, component
+    /// keywords (`red 1 green 0.5`) or an expression, in any combination.
+    pub(super) fn colour(&mut self) -> R<([f64; 5], Span)> {
+        let first = self.peek()?;
+        let mut span = first.span;
+        if first.is_ident("color") || first.is_ident("colour") {
+            self.next()?;
+        }
+        let mut c: Option<[f64; 5]> = None;
+        loop {
+            let tok = if c.is_some() {
+                self.peek_operator()?
+            } else {
+                self.peek()?
+            };
+            let Some(word) = tok.ident() else {
+                if c.is_none() {
+                    let (v, s) = self.expr()?;
+                    c = Some(self.to_colour(&v, s)?);
+                    span = span.join(s);
+                    continue;
+                }
+                break;
+            };
+            let word: Rc<str> = Rc::from(word);
+            match &*word {
+                // A second `rgb...` starts the next colour (as in `checker rgb A rgb B`);
+                // only component keywords may follow the first.
+                "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" | "srgbf" | "srgbt" | "srgbft"
+                    if c.is_none() =>
+                {
+                    self.next()?;
+                    self.enter(tok.span)?;
+                    let r = self.additive();
+                    self.leave();
+                    let (v, s) = r?;
+                    span = span.join(s);
+                    c = Some(self.colour_from(&word, &v, s)?);
+                }
+                "red" | "green" | "blue" | "filter" | "transmit" => {
+                    self.next()?;
+                    self.enter(tok.span)?;
+                    let r = self.additive();
+                    self.leave();
+                    let (v, s) = r?;
+                    span = span.join(s);
+                    let f = self.to_float(&v, s)?;
+                    let i = match &*word {
+                        "red" => 0,
+                        "green" => 1,
+                        "blue" => 2,
+                        "filter" => 3,
+                        _ => 4,
+                    };
+                    c.get_or_insert([0.0; 5])[i] = f;
+                }
+                _ if c.is_none() => {
+                    let (v, s) = self.expr()?;
+                    c = Some(self.to_colour(&v, s)?);
+                    span = span.join(s);
+                }
+                _ => break,
+            }
+        }
+        Ok((c.unwrap_or([0.0; 5]), span))
+    }
+
+    fn colour_from(&self, word: &str, v: &Value, span: Span) -> R<[f64; 5]> {
+        let srgb = word.starts_with('s');
+        let kind = word.trim_start_matches('s');
+        let (c, len) = match v {
+            Value::Float(f) => ([*f; 5], 5),
+            Value::Vector(v) => (v.c, v.len as usize),
+            Value::Colour(c) => (*c, 5),
+            other => {
+                return Err(self.err(
+                    span,
+                    format!(
+                        "`{word}` needs a float or a vector, found {}",
+                        other.kind_name()
+                    ),
+                ));
+            }
+        };
+        let need = match kind {
+            "rgb" => 3,
+            "rgbf" | "rgbt" => 4,
+            _ => 5,
+        };
+        if len < need {
+            return Err(self.err(
+                span,
+                format!("`{word}` needs a vector of {need} components, found {len}"),
+            ));
+        }
+        let mut out = [c[0], c[1], c[2], 0.0, 0.0];
+        match kind {
+            "rgbf" => out[3] = c[3],
+            "rgbt" => out[4] = c[3],
+            "rgbft" => {
+                out[3] = c[3];
+                out[4] = c[4];
+            }
+            _ => {}
+        }
+        if srgb {
+            for x in &mut out[..3] {
+                *x = srgb_decode(*x);
+            }
+        }
+        Ok(out)
+    }
+
+    fn call_function(&mut self, tok: &Token, name: &str) -> R<(Value, Span)> {
+        let open = self.expect(Punct::LParen, &format!("after `{name}`"))?;
+        self.enter(open.span)?;
+        let r = self.function_body(tok, name);
+        self.leave();
+        r
+    }
+
+    fn function_body(&mut self, tok: &Token, name: &str) -> R<(Value, Span)> {
+        if name == "defined" {
+            let id = self.raw_next();
+            let close = self.expect(Punct::RParen, "to close `defined(`")?;
+            let defined = id.ident().is_some_and(|n| self.lookup(n).is_some());
+            return Ok((
+                Value::Float(f64::from(u8::from(defined))),
+                tok.span.join(close.span),
+            ));
+        }
+        let saved = std::mem::replace(&mut self.in_vector, false);
+        let mut args: Vec<(Value, Span)> = Vec::new();
+        let r = (|| -> R<Token> {
+            if !self.peek()?.is_punct(Punct::RParen) {
+                loop {
+                    args.push(self.expr()?);
+                    if !self.eat(Punct::Comma)? {
+                        break;
+                    }
+                }
+            }
+            self.expect(Punct::RParen, &format!("to close `{name}(`"))
+        })();
+        self.in_vector = saved;
+        let close = r?;
+        let span = tok.span.join(close.span);
+        let v = self.apply_function(name, &args, span)?;
+        Ok((v, span))
+    }
+
+    fn arg_count(&self, name: &str, args: &[(Value, Span)], n: usize, span: Span) -> R<()> {
+        if args.len() != n {
+            return Err(self.err(
+                span,
+                format!(
+                    "`{name}` takes {n} argument{}, found {}",
+                    if n == 1 { "" } else { "s" },
+                    args.len()
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn apply_function(&mut self, name: &str, args: &[(Value, Span)], span: Span) -> R<Value> {
+        let f = |i: usize| -> R<f64> { self.to_float(&args[i].0, args[i].1) };
+        let v3 = |i: usize| -> R<DVec3> { self.to_vec3(&args[i].0, args[i].1) };
+        let s = |i: usize| -> R<Rc<str>> {
+            match &args[i].0 {
+                Value::Str(s) => Ok(s.clone()),
+                other => Err(self.err(
+                    args[i].1,
+                    format!("expected a string, found {}", other.kind_name()),
+                )),
+            }
+        };
+        let unary = |g: fn(f64) -> f64| -> R<Value> {
+            self.arg_count(name, args, 1, span)?;
+            Ok(Value::Float(g(f(0)?)))
+        };
+        let out = match name {
+            "sin" => unary(f64::sin)?,
+            "cos" => unary(f64::cos)?,
+            "tan" => unary(f64::tan)?,
+            "asin" => unary(f64::asin)?,
+            "acos" => unary(f64::acos)?,
+            "atan" => unary(f64::atan)?,
+            "sinh" => unary(f64::sinh)?,
+            "cosh" => unary(f64::cosh)?,
+            "tanh" => unary(f64::tanh)?,
+            "asinh" => unary(f64::asinh)?,
+            "acosh" => unary(f64::acosh)?,
+            "atanh" => unary(f64::atanh)?,
+            "sqrt" => unary(f64::sqrt)?,
+            "sqr" => unary(|x| x * x)?,
+            "exp" => unary(f64::exp)?,
+            "ln" => unary(f64::ln)?,
+            "log" => unary(f64::log10)?,
+            "abs" => unary(f64::abs)?,
+            "floor" => unary(f64::floor)?,
+            "ceil" => unary(f64::ceil)?,
+            "int" => unary(f64::trunc)?,
+            "radians" => unary(f64::to_radians)?,
+            "degrees" => unary(f64::to_degrees)?,
+            "atan2" | "pow" | "mod" | "div" => {
+                self.arg_count(name, args, 2, span)?;
+                let (a, b) = (f(0)?, f(1)?);
+                if (name == "mod" || name == "div") && b == 0.0 {
+                    return Err(self.err(args[1].1, "division by zero"));
+                }
+                Value::Float(match name {
+                    "atan2" => a.atan2(b),
+                    "pow" => a.powf(b),
+                    "mod" => a % b,
+                    _ => (a / b).trunc(),
+                })
+            }
+            "min" | "max" => {
+                if args.is_empty() {
+                    return Err(self.err(span, format!("`{name}` needs at least one argument")));
+                }
+                let mut m = f(0)?;
+                for i in 1..args.len() {
+                    let x = f(i)?;
+                    m = if name == "min" { m.min(x) } else { m.max(x) };
+                }
+                Value::Float(m)
+            }
+            "select" => {
+                if args.len() != 3 && args.len() != 4 {
+                    return Err(self.err(span, "`select` takes 3 or 4 arguments"));
+                }
+                let c = f(0)?;
+                if args.len() == 3 {
+                    if c < 0.0 {
+                        args[1].0.clone()
+                    } else {
+                        args[2].0.clone()
+                    }
+                } else if c < 0.0 {
+                    args[1].0.clone()
+                } else if c == 0.0 {
+                    args[2].0.clone()
+                } else {
+                    args[3].0.clone()
+                }
+            }
+            "bitwise_and" | "bitwise_or" | "bitwise_xor" => {
+                if args.is_empty() {
+                    return Err(self.err(span, format!("`{name}` needs arguments")));
+                }
+                let mut acc = f(0)? as i64;
+                for i in 1..args.len() {
+                    let b = f(i)? as i64;
+                    acc = match name {
+                        "bitwise_and" => acc & b,
+                        "bitwise_or" => acc | b,
+                        _ => acc ^ b,
+                    };
+                }
+                Value::Float(acc as f64)
+            }
+            "vlength" => {
+                self.arg_count(name, args, 1, span)?;
+                Value::Float(vector_len(&args[0].0).unwrap_or(v3(0)?.length()))
+            }
+            "vnormalize" => {
+                self.arg_count(name, args, 1, span)?;
+                let v = v3(0)?;
+                let l = v.length();
+                if l == 0.0 {
+                    return Err(self.err(args[0].1, "cannot normalize a zero-length vector"));
+                }
+                Value::Vector(Vector::new3(v / l))
+            }
+            "vdot" => {
+                self.arg_count(name, args, 2, span)?;
+                Value::Float(v3(0)?.dot(v3(1)?))
+            }
+            "vcross" => {
+                self.arg_count(name, args, 2, span)?;
+                Value::Vector(Vector::new3(v3(0)?.cross(v3(1)?)))
+            }
+            "vrotate" => {
+                self.arg_count(name, args, 2, span)?;
+                Value::Vector(Vector::new3(Transform::rotate(v3(1)?).vector(v3(0)?)))
+            }
+            "vaxis_rotate" => {
+                self.arg_count(name, args, 3, span)?;
+                let axis = v3(1)?;
+                if axis.length() == 0.0 {
+                    return Err(self.err(args[1].1, "the rotation axis has zero length"));
+                }
+                let m = DMat3::from_axis_angle(axis.normalize(), f(2)?.to_radians());
+                Value::Vector(Vector::new3(m * v3(0)?))
+            }
+            "str" => {
+                self.arg_count(name, args, 3, span)?;
+                Value::Str(Rc::from(format_float(f(0)?, f(1)?, f(2)?)))
+            }
+            "vstr" => {
+                self.arg_count(name, args, 5, span)?;
+                let (c, len) = match &args[1].0 {
+                    Value::Vector(v) => (v.c, v.len as usize),
+                    Value::Colour(c) => (*c, 5),
+                    Value::Float(x) => ([*x; 5], 5),
+                    other => {
+                        return Err(self.err(
+                            args[1].1,
+                            format!("expected a vector, found {}", other.kind_name()),
+                        ));
+                    }
+                };
+                let n = (f(0)?.max(0.0) as usize).min(len).min(5);
+                let sep = s(2)?;
+                let (l, p) = (f(3)?, f(4)?);
+                let parts: Vec<String> = c[..n].iter().map(|x| format_float(*x, l, p)).collect();
+                Value::Str(Rc::from(parts.join(&sep)))
+            }
+            "concat" => {
+                let mut out = String::new();
+                for i in 0..args.len() {
+                    out.push_str(&s(i)?);
+                }
+                Value::Str(Rc::from(out))
+            }
+            "chr" => {
+                self.arg_count(name, args, 1, span)?;
+                let c = char::from_u32(f(0)?.max(0.0) as u32).unwrap_or('?');
+                Value::Str(Rc::from(c.to_string()))
+            }
+            "asc" => {
+                self.arg_count(name, args, 1, span)?;
+                Value::Float(s(0)?.chars().next().map_or(0.0, |c| f64::from(c as u32)))
+            }
+            "strlen" => {
+                self.arg_count(name, args, 1, span)?;
+                Value::Float(s(0)?.chars().count() as f64)
+            }
+            "strupr" | "strlwr" => {
+                self.arg_count(name, args, 1, span)?;
+                let t = s(0)?;
+                Value::Str(Rc::from(if name == "strupr" {
+                    t.to_uppercase()
+                } else {
+                    t.to_lowercase()
+                }))
+            }
+            "substr" => {
+                self.arg_count(name, args, 3, span)?;
+                let t: Vec<char> = s(0)?.chars().collect();
+                let start = f(1)? as i64 - 1;
+                let len = f(2)? as i64;
+                if start < 0 || len < 0 || start.saturating_add(len) as usize > t.len() {
+                    return Err(self.err(span, "`substr` range is outside the string"));
+                }
+                let out: String = t[start as usize..(start + len) as usize].iter().collect();
+                Value::Str(Rc::from(out))
+            }
+            "strcmp" => {
+                self.arg_count(name, args, 2, span)?;
+                Value::Float(match s(0)?.cmp(&s(1)?) {
+                    std::cmp::Ordering::Less => -1.0,
+                    std::cmp::Ordering::Equal => 0.0,
+                    std::cmp::Ordering::Greater => 1.0,
+                })
+            }
+            "val" => {
+                self.arg_count(name, args, 1, span)?;
+                Value::Float(s(0)?.trim().parse::<f64>().unwrap_or(0.0))
+            }
+            "file_exists" => {
+                self.arg_count(name, args, 1, span)?;
+                let name = s(0)?;
+                Value::Float(f64::from(u8::from(self.resolve_include(&name).is_some())))
+            }
+            "seed" => {
+                self.arg_count(name, args, 1, span)?;
+                let seed = f(0)? as i64 as u64;
+                self.rng_states
+                    .push(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0x5851_F42D);
+                Value::Float((self.rng_states.len() - 1) as f64)
+            }
+            "rand" => {
+                self.arg_count(name, args, 1, span)?;
+                let i = f(0)?;
+                let state = if i >= 0.0 {
+                    self.rng_states.get_mut(i as usize)
+                } else {
+                    None
+                };
+                let Some(state) = state else {
+                    return Err(self.err(args[0].1, "`rand` needs a stream made by `seed`"));
+                };
+                Value::Float(next_random(state))
+            }
+            _ => return Err(self.err(span, format!("unsupported: `{name}` is not supported yet"))),
+        };
+        Ok(out)
+    }
+
+    fn index_array(&mut self, v: &Value) -> R<Value> {
+        let Value::Array(a) = v else {
+            let tok = self.peek()?;
+            return Err(self.expected("an array", &tok));
+        };
+        let a = a.clone();
+        let mut indices = Vec::new();
+        let mut span = self.peek()?.span;
+        while indices.len() < a.borrow().dims.len()
+            && self.peek_operator()?.is_punct(Punct::LBracket)
+        {
+            self.next()?;
+            let (i, s) = self.expr()?;
+            let i = self.to_float(&i, s)?;
+            let close = self.expect(Punct::RBracket, "to close the index")?;
+            span = span.join(close.span);
+            indices.push((i, s));
+        }
+        let flat = self.flat_index(&a.borrow().dims, &indices, span)?;
+        let item = a.borrow().items.get(flat).cloned().flatten();
+        item.ok_or_else(|| self.err(span, "this array element has not been set"))
+    }
+
+    pub(super) fn flat_index(&self, dims: &[usize], idx: &[(f64, Span)], span: Span) -> R<usize> {
+        if idx.len() != dims.len() {
+            return Err(self.err(
+                span,
+                format!(
+                    "this array has {} dimensions, found {} indices",
+                    dims.len(),
+                    idx.len()
+                ),
+            ));
+        }
+        let mut flat = 0usize;
+        for (&d, &(i, s)) in dims.iter().zip(idx) {
+            if i < 0.0 || i as usize >= d {
+                return Err(self.err(s, format!("index {i} is outside the array (size {d})")));
+            }
+            flat = flat * d + i as usize;
+        }
+        Ok(flat)
+    }
+}
+
+fn vector_len(v: &Value) -> Option<f64> {
+    match v {
+        Value::Vector(v) => Some(
+            v.c[..v.len as usize]
+                .iter()
+                .map(|x| x * x)
+                .sum::<f64>()
+                .sqrt(),
+        ),
+        _ => None,
+    }
+}
+
+/// `str(value, length, precision)`: at least `length` characters (negative: pad with
+/// zeros), `precision` decimals (negative: 6).
+fn format_float(x: f64, len: f64, prec: f64) -> String {
+    let prec = if prec < 0.0 {
+        6
+    } else {
+        prec.min(20.0) as usize
+    };
+    let width = len.abs().min(64.0) as usize;
+    if len < 0.0 {
+        format!("{x:0width$.prec$}")
+    } else {
+        format!("{x:width$.prec$}")
+    }
+}
+
+fn srgb_decode(v: f64) -> f64 {
+    if v <= 0.04045 {
+        v / 12.92
+    } else {
+        ((v + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// A small deterministic generator (SplitMix64) for `rand`: POV-Ray's own sequence is not
+/// reproduced, only the contract (uniform in [0, 1], repeatable from the seed).
+fn next_random(state: &mut u64) -> f64 {
+    *state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^= z >> 31;
+    (z >> 11) as f64 / (1u64 << 53) as f64
+}

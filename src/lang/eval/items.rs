@@ -1,0 +1,498 @@
+//! Top-level items (camera, lights, background, global settings, objects) and the values a
+//! `#declare` can hold.
+
+use glam::DVec3;
+
+use super::super::diagnostics::Diagnostic;
+use super::super::syntax::{Punct, Token, TokenKind};
+use super::Evaluator;
+use super::value::{ObjectValue, Value, transform_light};
+use crate::scene::{AreaLight, CameraSpec, Light, LightKind};
+
+type R<T> = Result<T, Diagnostic>;
+
+/// Features POV-Ray has at the top level that penumbra does not model yet.
+const UNSUPPORTED_ITEMS: &[&str] = &[
+    "sky_sphere",
+    "fog",
+    "rainbow",
+    "media",
+    "photons",
+    "radiosity",
+];
+
+impl Evaluator<'_> {
+    pub(super) fn item(&mut self) -> R<()> {
+        let tok = self.peek()?;
+        let Some(word) = tok.ident() else {
+            return Err(self.expected("an object, a camera, a light or a directive", &tok));
+        };
+        match word {
+            "camera" => {
+                let spec = self.camera_block()?;
+                self.scene.camera = spec.resolve();
+            }
+            "background" => {
+                let open = self.block_start("background")?;
+                let (c, _) = self.colour()?;
+                self.scene.background = super::value::colour_of(c);
+                self.block_end(open, "the background")?;
+            }
+            "global_settings" => self.global_settings()?,
+            "light_source" => {
+                let light = self.light_source()?;
+                self.scene.lights.push(light);
+            }
+            _ if super::objects::is_object_keyword(word) => {
+                let o = self.object()?;
+                self.add_object(o);
+            }
+            _ if UNSUPPORTED_ITEMS.contains(&word) => return Err(self.unsupported(&tok, word)),
+            _ => {
+                if let Some(v) = self.lookup(word) {
+                    let hint = match v {
+                        Value::Object(_) => format!("to place it, write `object {{ {word} }}`"),
+                        _ => format!("`{word}` is {}", v.kind_name()),
+                    };
+                    return Err(self
+                        .err(
+                            tok.span,
+                            format!("expected an object, a camera, a light or a directive, found `{word}`"),
+                        )
+                        .with_hint(hint));
+                }
+                if super::keywords::is_keyword(word) {
+                    if super::objects::is_known_unsupported_shape(word) {
+                        return Err(self.unsupported(&tok, word));
+                    }
+                    return Err(self.expected("an object, a camera, a light or a directive", &tok));
+                }
+                return Err(self.unknown_identifier(&tok, word));
+            }
+        }
+        Ok(())
+    }
+
+    pub(super) fn add_object(&mut self, o: ObjectValue) {
+        if let Some(mut object) = o.object {
+            // Only a changed default needs writing down: `None` already means the built-in
+            // default texture to the renderer.
+            if object.texture.is_none() && self.default_texture != crate::scene::Texture::default()
+            {
+                object.texture = Some(self.default_texture.clone());
+            }
+            self.scene.objects.push(object);
+        }
+        self.scene.lights.extend(o.lights);
+    }
+
+    /// What may follow `#declare Name =`.
+    pub(super) fn declared_value(&mut self) -> R<Value> {
+        let tok = self.peek()?;
+        let Some(word) = tok.ident() else {
+            return Ok(self.expr()?.0);
+        };
+        if self.lookup(word).is_some() {
+            return Ok(self.expr()?.0);
+        }
+        Ok(match word {
+            _ if super::objects::is_object_keyword(word) => Value::Object(Box::new(self.object()?)),
+            "light_source" => Value::Object(Box::new(ObjectValue {
+                object: None,
+                lights: vec![self.light_source()?],
+            })),
+            "camera" => Value::Camera(Box::new(self.camera_block()?)),
+            "pigment" => {
+                self.next()?;
+                Value::Pigment(Box::new(
+                    self.pigment_body(self.default_texture.pigment.clone())?,
+                ))
+            }
+            "finish" => {
+                self.next()?;
+                Value::Finish(Box::new(self.finish_body(self.default_texture.finish)?))
+            }
+            "texture" => {
+                self.next()?;
+                let t = self.texture_body(self.default_texture.clone())?;
+                self.no_layered_texture()?;
+                Value::Texture(Box::new(t))
+            }
+            "interior" => {
+                self.next()?;
+                Value::Interior(self.interior_body(crate::scene::Interior::default())?)
+            }
+            "transform" => {
+                self.next()?;
+                Value::Transform(Box::new(self.transform_block()?))
+            }
+            "array" => self.array_value()?,
+            _ if super::keywords::is_keyword(word)
+                && !super::keywords::is_expression_keyword(word) =>
+            {
+                return Err(self.unsupported(&tok, word));
+            }
+            _ => self.expr()?.0,
+        })
+    }
+
+    /// A second `texture` right after one makes a layered texture, which the model lacks.
+    /// Looks ahead without running directives, since the declaration is not finished.
+    pub(super) fn no_layered_texture(&mut self) -> R<()> {
+        if let Some(tok) = self.raw_peek(0).cloned()
+            && tok.is_ident("texture")
+        {
+            return Err(self.err(
+                tok.span,
+                "unsupported: layered textures (`texture` after `texture`) are not supported yet",
+            ));
+        }
+        Ok(())
+    }
+
+    /// `keyword {`: consumes both and returns the brace token for error messages.
+    pub(super) fn block_start(&mut self, keyword: &str) -> R<Token> {
+        self.next()?;
+        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
+        self.enter(open.span)?;
+        Ok(open)
+    }
+
+    /// The closing brace of a block opened with [`Evaluator::block_start`].
+    pub(super) fn block_end(&mut self, _open: Token, what: &str) -> R<()> {
+        self.leave();
+        self.expect(Punct::RBrace, &format!("to close {what}"))?;
+        Ok(())
+    }
+
+    /// The error for a token that does not belong in a block: unsupported feature, unknown
+    /// name, or a missing `}`.
+    pub(super) fn stray_in_block(&self, tok: &Token, what: &str) -> Diagnostic {
+        if let TokenKind::Ident(word) = &tok.kind
+            && self.lookup(word).is_none()
+        {
+            if !super::keywords::is_keyword(word) {
+                return self.unknown_identifier(tok, word);
+            }
+            if !TOP_LEVEL_ONLY.contains(&&**word) && !super::objects::is_object_keyword(word) {
+                return self.unsupported(tok, word);
+            }
+        }
+        self.expected(&format!("`}}` to close {what}"), tok)
+    }
+
+    fn camera_block(&mut self) -> R<CameraSpec> {
+        let open = self.block_start("camera")?;
+        let mut spec = CameraSpec::default();
+        loop {
+            let tok = self.peek()?;
+            if tok.is_punct(Punct::RBrace) {
+                break;
+            }
+            let Some(word) = tok.ident() else {
+                return Err(self.stray_in_block(&tok, "the camera"));
+            };
+            match word {
+                "perspective" => {
+                    self.next()?;
+                }
+                "location" | "look_at" | "right" | "up" | "direction" | "sky" => {
+                    let word = word.to_string();
+                    self.next()?;
+                    let v = self.vector3()?;
+                    match word.as_str() {
+                        "location" => spec.location = v,
+                        "look_at" => spec.look_at = Some(v),
+                        "right" => spec.right = v,
+                        "up" => spec.up = v,
+                        "direction" => spec.direction = v,
+                        _ => spec.sky = v,
+                    }
+                }
+                "angle" => {
+                    self.next()?;
+                    spec.angle = Some(self.float()?);
+                }
+                "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
+                | "spherical" | "cylinder" | "mesh_camera" | "aperture" | "blur_samples"
+                | "focal_point" | "confidence" | "variance" | "normal" => {
+                    return Err(self.unsupported(&tok, word));
+                }
+                _ => {
+                    if let Some(Value::Camera(c)) = self.lookup(word).cloned() {
+                        self.next()?;
+                        spec = *c;
+                        continue;
+                    }
+                    if let Some(t) = self.transform_modifier()? {
+                        spec.transform = spec.transform.then(&t);
+                        continue;
+                    }
+                    return Err(self.stray_in_block(&tok, "the camera"));
+                }
+            }
+        }
+        self.block_end(open, "the camera")?;
+        Ok(spec)
+    }
+
+    pub(super) fn light_source(&mut self) -> R<Light> {
+        let open = self.block_start("light_source")?;
+        let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
+        let first = self.peek()?;
+        if let Some(Value::Object(o)) = first.ident().and_then(|w| self.lookup(w)).cloned() {
+            if let Some(l) = o.lights.first() {
+                self.next()?;
+                light = l.clone();
+            }
+        } else {
+            light.location = self.vector3()?;
+            self.eat(Punct::Comma)?;
+            let (c, _) = self.colour()?;
+            light.colour = DVec3::new(c[0], c[1], c[2]);
+        }
+        let mut has_area = light.area.is_some();
+        let mut pending = light.area.unwrap_or(AreaLight {
+            axis1: DVec3::ZERO,
+            axis2: DVec3::ZERO,
+            size1: 1,
+            size2: 1,
+            adaptive: None,
+            jitter: false,
+            circular: false,
+            orient: false,
+        });
+        let mut spot = matches!(light.kind, LightKind::Spot { .. });
+        let mut parallel = matches!(light.kind, LightKind::Parallel { .. });
+        let (mut point_at, mut radius, mut falloff, mut tightness) = match light.kind {
+            LightKind::Point => (DVec3::Z, 30.0, 45.0, 0.0),
+            LightKind::Spot {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            } => (point_at, radius, falloff, tightness),
+            LightKind::Parallel { point_at } => (point_at, 30.0, 45.0, 0.0),
+        };
+        loop {
+            let tok = self.peek()?;
+            if tok.is_punct(Punct::RBrace) {
+                break;
+            }
+            let Some(word) = tok.ident() else {
+                return Err(self.stray_in_block(&tok, "the light_source"));
+            };
+            let word = word.to_string();
+            match word.as_str() {
+                "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
+                    let (c, _) = self.colour()?;
+                    light.colour = DVec3::new(c[0], c[1], c[2]);
+                }
+                "area_light" => {
+                    self.next()?;
+                    let axis1 = self.vector3()?;
+                    self.eat(Punct::Comma)?;
+                    let axis2 = self.vector3()?;
+                    self.eat(Punct::Comma)?;
+                    let size1 = self.count()?;
+                    self.eat(Punct::Comma)?;
+                    let size2 = self.count()?;
+                    pending.axis1 = axis1;
+                    pending.axis2 = axis2;
+                    pending.size1 = size1;
+                    pending.size2 = size2;
+                    has_area = true;
+                }
+                "adaptive" => {
+                    self.next()?;
+                    let k = self.float()?;
+                    pending.adaptive = Some(k.max(0.0) as u32);
+                }
+                // Without an `area_light` these do nothing, as in POV-Ray; they are kept
+                // in case the `area_light` comes later in the block.
+                "jitter" => {
+                    self.next()?;
+                    pending.jitter = true;
+                }
+                "circular" => {
+                    self.next()?;
+                    pending.circular = true;
+                }
+                "orient" => {
+                    self.next()?;
+                    pending.orient = true;
+                }
+                "shadowless" => {
+                    self.next()?;
+                    light.shadowless = true;
+                }
+                "area_illumination" => {
+                    self.next()?;
+                    light.area_illumination = self.optional_bool()?;
+                }
+                "media_interaction" | "media_attenuation" => {
+                    // Only matters with media, which penumbra does not have.
+                    self.next()?;
+                    self.optional_bool()?;
+                }
+                "fade_distance" => {
+                    self.next()?;
+                    light.fade_distance = self.float()?;
+                }
+                "fade_power" => {
+                    self.next()?;
+                    light.fade_power = self.float()?;
+                }
+                "spotlight" => {
+                    self.next()?;
+                    spot = true;
+                }
+                "parallel" => {
+                    self.next()?;
+                    parallel = true;
+                }
+                "point_at" => {
+                    self.next()?;
+                    point_at = self.vector3()?;
+                }
+                "radius" => {
+                    self.next()?;
+                    radius = self.float()?;
+                }
+                "falloff" => {
+                    self.next()?;
+                    falloff = self.float()?;
+                }
+                "tightness" => {
+                    self.next()?;
+                    tightness = self.float()?;
+                }
+                "cylinder" | "looks_like" | "projected_through" | "photons" => {
+                    return Err(self.unsupported(&tok, &word));
+                }
+                _ => {
+                    if let Some(t) = self.transform_modifier()? {
+                        // Keep the spotlight target in the light's kind while transforming.
+                        light.kind = kind_of(spot, parallel, point_at, radius, falloff, tightness);
+                        light.area = has_area.then_some(pending);
+                        transform_light(&mut light, &t);
+                        if let Some(a) = light.area {
+                            pending = a;
+                        }
+                        point_at = match light.kind {
+                            LightKind::Spot { point_at, .. } | LightKind::Parallel { point_at } => {
+                                point_at
+                            }
+                            LightKind::Point => t.point(point_at),
+                        };
+                        continue;
+                    }
+                    return Err(self.stray_in_block(&tok, "the light_source"));
+                }
+            }
+        }
+        light.kind = kind_of(spot, parallel, point_at, radius, falloff, tightness);
+        light.area = has_area.then_some(pending);
+        self.block_end(open, "the light_source")?;
+        Ok(light)
+    }
+
+    /// A positive whole number (grid sizes).
+    fn count(&mut self) -> R<u32> {
+        let (v, s) = self.expr()?;
+        let f = self.to_float(&v, s)?;
+        if !(1.0..=1e6).contains(&f) {
+            return Err(self.err(s, format!("expected a count of at least 1, found {f}")));
+        }
+        Ok(f as u32)
+    }
+
+    /// A keyword like `hollow` that may be followed by a boolean.
+    pub(super) fn optional_bool(&mut self) -> R<bool> {
+        if self.starts_float()? {
+            let f = self.float()?;
+            return Ok(f.abs() > 1e-10);
+        }
+        Ok(true)
+    }
+
+    /// Whether the next token begins a float expression (for optional arguments).
+    pub(super) fn starts_float(&mut self) -> R<bool> {
+        let tok = self.peek()?;
+        Ok(match &tok.kind {
+            TokenKind::Number(_) => true,
+            TokenKind::Punct(p) => {
+                matches!(p, Punct::Minus | Punct::Plus | Punct::LParen | Punct::Bang)
+            }
+            TokenKind::Ident(w) => {
+                matches!(&**w, "true" | "false" | "on" | "off" | "yes" | "no" | "pi")
+                    || super::keywords::is_function(w)
+                    || matches!(self.lookup(w), Some(Value::Float(_)))
+            }
+            _ => false,
+        })
+    }
+
+    fn global_settings(&mut self) -> R<()> {
+        let open = self.block_start("global_settings")?;
+        loop {
+            let tok = self.peek()?;
+            if tok.is_punct(Punct::RBrace) {
+                break;
+            }
+            let Some(word) = tok.ident() else {
+                return Err(self.stray_in_block(&tok, "global_settings"));
+            };
+            let word = word.to_string();
+            self.next()?;
+            match word.as_str() {
+                "assumed_gamma" => self.scene.settings.assumed_gamma = Some(self.float()?),
+                "max_trace_level" => {
+                    let f = self.float()?;
+                    self.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
+                }
+                "adc_bailout" => self.scene.settings.adc_bailout = self.float()?,
+                "ambient_light" => {
+                    let (c, _) = self.colour()?;
+                    self.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);
+                }
+                "max_intersections" | "number_of_waves" | "noise_generator" => {
+                    self.float()?;
+                }
+                "charset" => {
+                    self.next()?;
+                }
+                "irid_wavelength" => {
+                    self.colour()?;
+                }
+                _ => return Err(self.stray_in_block(&tok, "global_settings")),
+            }
+        }
+        self.block_end(open, "global_settings")
+    }
+}
+
+fn kind_of(
+    spot: bool,
+    parallel: bool,
+    point_at: DVec3,
+    radius: f64,
+    falloff: f64,
+    tightness: f64,
+) -> LightKind {
+    if parallel {
+        LightKind::Parallel { point_at }
+    } else if spot {
+        LightKind::Spot {
+            point_at,
+            radius,
+            falloff,
+            tightness,
+        }
+    } else {
+        LightKind::Point
+    }
+}
+
+/// Items that are only valid at the top of a file: inside a block they mean a `}` is missing.
+const TOP_LEVEL_ONLY: &[&str] = &["camera", "global_settings", "background", "light_source"];

@@ -1,0 +1,206 @@
+//! The evaluator: reads tokens, runs directives and macros as it meets them, and builds the
+//! scene model.
+//!
+//! POV-Ray's language has no separate preprocessor: `#if`, `#while` and macro calls work on
+//! the token stream wherever they appear. So the evaluator is one recursive-descent reader
+//! over a stack of token *frames* (the scene file, included files, macro bodies). Asking for
+//! the next token ([`Evaluator::peek`]) transparently runs any directive or macro call in the
+//! way; everything above that level (expressions, objects, textures) just reads tokens.
+//!
+//! Files: `stream` (frames, scopes, limits), `directives` (`#declare`, flow control, macros,
+//! includes), `expr` (expressions and built-in functions), `items` (camera, lights, global
+//! settings), `objects` (shapes, CSG, modifiers), `texture` (pigment, finish, texture).
+
+mod directives;
+mod expr;
+mod items;
+mod keywords;
+mod objects;
+mod stream;
+mod texture;
+pub mod value;
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::rc::Rc;
+
+use crate::scene::Scene;
+
+use super::World;
+use super::diagnostics::{Diagnostic, Files, Span};
+use super::syntax::{Punct, Token, TokenKind};
+use stream::{Cond, Frame};
+use value::Value;
+
+/// Deeper nesting than this (blocks, parentheses, macro calls, includes) is reported rather
+/// than risking the stack.
+pub const MAX_DEPTH: usize = 256;
+/// Total loop iterations in a scene, so an endless `#while` ends with an error.
+#[cfg(not(test))]
+pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
+/// Smaller under test so the endless-loop test is quick.
+#[cfg(test)]
+pub const MAX_LOOP_ITERATIONS: u64 = 100_000;
+
+pub struct Evaluator<'w> {
+    world: &'w dyn World,
+    pub files: Files,
+    frames: Vec<Frame>,
+    conds: Vec<Cond>,
+    scopes: Vec<HashMap<Rc<str>, Value>>,
+    pub scene: Scene,
+    pub warnings: Vec<Diagnostic>,
+    depth: usize,
+    loop_iterations: u64,
+    include_paths: Vec<PathBuf>,
+    image_width: u32,
+    image_height: u32,
+    rng_states: Vec<u64>,
+    /// Inside `<...>` a `>` closes the vector instead of comparing.
+    in_vector: bool,
+    /// What new textures start from; `#default` changes it.
+    default_texture: crate::scene::Texture,
+}
+
+impl<'w> Evaluator<'w> {
+    pub fn new(
+        world: &'w dyn World,
+        include_paths: Vec<PathBuf>,
+        image_width: u32,
+        image_height: u32,
+    ) -> Evaluator<'w> {
+        Evaluator {
+            world,
+            files: Files::default(),
+            frames: Vec::new(),
+            conds: Vec::new(),
+            scopes: vec![HashMap::new()],
+            scene: Scene::default(),
+            warnings: Vec::new(),
+            depth: 0,
+            loop_iterations: 0,
+            include_paths,
+            image_width,
+            image_height,
+            rng_states: Vec::new(),
+            in_vector: false,
+            default_texture: crate::scene::Texture::default(),
+        }
+    }
+
+    pub fn declare_global(&mut self, name: &str, value: Value) {
+        self.scopes[0].insert(Rc::from(name), value);
+    }
+
+    /// Reads the whole scene from `name`/`source` and returns the finished scene.
+    pub fn run(&mut self, name: &str, source: &str) -> Result<(), Diagnostic> {
+        let result = self.run_inner(name, source);
+        result.map_err(|d| self.files.resolve(d))
+    }
+
+    fn run_inner(&mut self, name: &str, source: &str) -> Result<(), Diagnostic> {
+        self.push_file(name.to_string(), Rc::from(source), None)?;
+        loop {
+            let tok = self.peek()?;
+            if tok.kind == TokenKind::Eof {
+                return Ok(());
+            }
+            self.item()?;
+        }
+    }
+
+    /// Builds an error carrying the chain of macro calls and includes in force.
+    fn err(&self, span: Span, message: impl Into<String>) -> Diagnostic {
+        let mut d = Diagnostic::error(span, message);
+        d.trace = self.trace();
+        d
+    }
+
+    fn warn(&mut self, span: Span, message: impl Into<String>) {
+        let d = Diagnostic::warning(span, message);
+        let d = self.files.resolve(d);
+        self.warnings.push(d);
+    }
+
+    fn expected(&self, what: &str, found: &Token) -> Diagnostic {
+        self.err(
+            found.span,
+            format!("expected {what}, found {}", found.describe()),
+        )
+    }
+
+    /// Consumes the punctuation or reports what was there instead.
+    fn expect(&mut self, p: Punct, context: &str) -> Result<Token, Diagnostic> {
+        let tok = self.peek()?;
+        if tok.is_punct(p) {
+            self.next()?;
+            Ok(tok)
+        } else {
+            let what = if context.is_empty() {
+                format!("`{}`", p.text())
+            } else {
+                format!("`{}` {context}", p.text())
+            };
+            Err(self.expected(&what, &tok))
+        }
+    }
+
+    fn eat(&mut self, p: Punct) -> Result<bool, Diagnostic> {
+        if self.peek()?.is_punct(p) {
+            self.next()?;
+            Ok(true)
+        } else {
+            Ok(false)
+        }
+    }
+
+    fn eat_ident(&mut self, name: &str) -> Result<bool, Diagnostic> {
+        if self.peek()?.is_ident(name) {
+            self.next()?;
+            Ok(true)
+        } else {
+            Ok(false)
+        }
+    }
+
+    /// Guards recursion: every nested block, parenthesis and call goes through here.
+    fn enter(&mut self, span: Span) -> Result<(), Diagnostic> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(self.err(
+                span,
+                format!("nesting is too deep (more than {MAX_DEPTH} levels)"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn leave(&mut self) {
+        self.depth = self.depth.saturating_sub(1);
+    }
+
+    fn lookup(&self, name: &str) -> Option<&Value> {
+        self.scopes.iter().rev().find_map(|s| s.get(name))
+    }
+
+    /// The unknown-identifier error with the nearest declared name as a hint.
+    fn unknown_identifier(&self, tok: &Token, name: &str) -> Diagnostic {
+        let mut d = self.err(tok.span, format!("unknown identifier `{name}`"));
+        let names = self.scopes.iter().flat_map(|s| s.keys().map(|k| &**k));
+        if let Some(best) = super::diagnostics::nearest(name, names) {
+            d = d.with_hint(format!("did you mean `{best}`?"));
+        } else if let Some(best) =
+            super::diagnostics::nearest(name, keywords::KEYWORDS.iter().copied())
+        {
+            d = d.with_hint(format!("did you mean `{best}`?"));
+        }
+        d
+    }
+
+    fn unsupported(&self, tok: &Token, name: &str) -> Diagnostic {
+        self.err(
+            tok.span,
+            format!("unsupported: `{name}` is not supported yet"),
+        )
+    }
+}

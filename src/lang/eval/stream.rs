@@ -1,0 +1,415 @@
+//! The token stream: a stack of frames (files, macro bodies) and the state of open
+//! `#if`/`#while`/`#for` blocks. Directives and macro calls are run here, as they are met.
+
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use super::super::diagnostics::{Diagnostic, FileId, Span, TracePoint};
+use super::super::parse::tokenize;
+use super::super::syntax::{Token, TokenKind};
+use super::Evaluator;
+use super::value::{MacroDef, Value};
+
+pub(super) enum FrameKind {
+    Root,
+    Include {
+        at: Span,
+        name: String,
+    },
+    Macro {
+        def: Rc<MacroDef>,
+        call: Span,
+        /// Parameter name and the caller's identifier it was passed as: POV-Ray passes
+        /// identifiers by reference, so assignments to the parameter are copied back.
+        by_ref: Vec<(Rc<str>, Rc<str>)>,
+    },
+}
+
+pub(super) struct Frame {
+    pub file: FileId,
+    pub tokens: Rc<[Token]>,
+    pub pos: usize,
+    pub end: usize,
+    pub eof: Span,
+    pub kind: FrameKind,
+    /// Length of the block stack when the frame started: blocks opened inside a file or a
+    /// macro must close inside it.
+    pub cond_base: usize,
+}
+
+/// An open `#if`, `#while`, `#for` or `#switch` block.
+pub(super) enum Cond {
+    If {
+        span: Span,
+    },
+    /// `at` is the index of the `#while` token, re-read at `#end` to test again.
+    While {
+        span: Span,
+        at: usize,
+    },
+    For {
+        span: Span,
+        var: Rc<str>,
+        end: f64,
+        step: f64,
+        body: usize,
+    },
+    Switch {
+        span: Span,
+        value: f64,
+        matched: bool,
+    },
+}
+
+impl Cond {
+    pub fn span(&self) -> Span {
+        match self {
+            Cond::If { span }
+            | Cond::While { span, .. }
+            | Cond::For { span, .. }
+            | Cond::Switch { span, .. } => *span,
+        }
+    }
+}
+
+/// Where a skip of a false branch stopped.
+#[derive(Debug, PartialEq, Eq)]
+pub(super) enum SkipStop {
+    Else,
+    ElseIf,
+    End,
+    Case,
+    Range,
+    Break,
+}
+
+impl Evaluator<'_> {
+    pub(super) fn push_file(
+        &mut self,
+        name: String,
+        text: Rc<str>,
+        include_at: Option<Span>,
+    ) -> Result<(), Diagnostic> {
+        if self.frames.len() >= super::MAX_DEPTH {
+            let span = include_at.unwrap_or(Span::DETACHED);
+            return Err(self.err(span, "includes are nested too deeply"));
+        }
+        let id = self.files.add(name.clone(), text.clone());
+        let tokens = tokenize(id, &text).map_err(|mut d| {
+            d.trace = self.trace();
+            if let Some(at) = include_at {
+                d.trace.insert(
+                    0,
+                    TracePoint {
+                        message: format!("in file `{name}` included here"),
+                        span: at,
+                        location: None,
+                    },
+                );
+            }
+            d
+        })?;
+        let kind = match include_at {
+            None => FrameKind::Root,
+            Some(at) => {
+                self.scopes.push(HashMap::new());
+                FrameKind::Include { at, name }
+            }
+        };
+        self.frames.push(Frame {
+            file: id,
+            end: tokens.tokens.len(),
+            tokens: tokens.tokens,
+            pos: 0,
+            eof: tokens.eof,
+            kind,
+            cond_base: self.conds.len(),
+        });
+        Ok(())
+    }
+
+    pub(super) fn push_macro(
+        &mut self,
+        def: Rc<MacroDef>,
+        call: Span,
+        locals: HashMap<Rc<str>, Value>,
+        by_ref: Vec<(Rc<str>, Rc<str>)>,
+    ) -> Result<(), Diagnostic> {
+        if self.frames.len() >= super::MAX_DEPTH {
+            return Err(self.err(
+                call,
+                format!(
+                    "macro calls are nested too deeply (more than {} levels)",
+                    super::MAX_DEPTH
+                ),
+            ));
+        }
+        self.scopes.push(locals);
+        let eof = def.tokens.get(def.end).map_or(Span::DETACHED, |t| t.span);
+        self.frames.push(Frame {
+            file: def.file,
+            tokens: def.tokens.clone(),
+            pos: def.start,
+            end: def.end,
+            eof,
+            kind: FrameKind::Macro { def, call, by_ref },
+            cond_base: self.conds.len(),
+        });
+        Ok(())
+    }
+
+    /// The include and macro chain, innermost first.
+    pub(super) fn trace(&self) -> Vec<TracePoint> {
+        let mut out = Vec::new();
+        for frame in self.frames.iter().rev() {
+            match &frame.kind {
+                FrameKind::Root => {}
+                FrameKind::Include { at, name } => out.push(TracePoint {
+                    message: format!("in file `{name}` included here"),
+                    span: *at,
+                    location: None,
+                }),
+                FrameKind::Macro { def, call, .. } => out.push(TracePoint {
+                    message: format!("in macro `{}` called here", def.name),
+                    span: *call,
+                    location: None,
+                }),
+            }
+        }
+        out
+    }
+
+    /// The next token, after running any directives and macro calls in front of it.
+    pub(super) fn peek(&mut self) -> Result<Token, Diagnostic> {
+        loop {
+            let Some(frame) = self.frames.last() else {
+                return Ok(Token {
+                    kind: TokenKind::Eof,
+                    span: Span::DETACHED,
+                });
+            };
+            if frame.pos >= frame.end {
+                if let Some(cond) = self.conds.get(frame.cond_base) {
+                    let what = match cond {
+                        Cond::If { .. } => "#if",
+                        Cond::While { .. } => "#while",
+                        Cond::For { .. } => "#for",
+                        Cond::Switch { .. } => "#switch",
+                    };
+                    return Err(self.err(cond.span(), format!("this `{what}` has no `#end`")));
+                }
+                if self.frames.len() == 1 {
+                    return Ok(Token {
+                        kind: TokenKind::Eof,
+                        span: frame.eof,
+                    });
+                }
+                self.pop_frame();
+                continue;
+            }
+            let tok = frame.tokens[frame.pos].clone();
+            match &tok.kind {
+                TokenKind::Directive(name) => {
+                    self.advance();
+                    self.directive(name.clone(), tok.span)?;
+                }
+                TokenKind::Ident(name) if matches!(self.lookup(name), Some(Value::Macro(_))) => {
+                    self.advance();
+                    self.call_macro(name.clone(), tok.span)?;
+                }
+                TokenKind::Ident(name) => {
+                    if let Some(Value::Unsupported(original)) = self.lookup(name) {
+                        let mut d = self.err(tok.span, original.message.clone());
+                        d.trace.insert(
+                            0,
+                            TracePoint {
+                                message: format!("`{name}` was declared with it"),
+                                span: original.span,
+                                location: None,
+                            },
+                        );
+                        return Err(d);
+                    }
+                    return Ok(tok);
+                }
+                _ => return Ok(tok),
+            }
+        }
+    }
+
+    /// Like [`Evaluator::peek`], for the look-ahead after a complete operand ("is an
+    /// operator next?"). A directive or macro call there ends the expression unrun, so that
+    /// in `#declare I = I + 1` followed by `#end`, the loop's `#end` runs after the
+    /// assignment rather than in the middle of it. Macro bodies that end are still left
+    /// transparently.
+    pub(super) fn peek_operator(&mut self) -> Result<Token, Diagnostic> {
+        while let Some(frame) = self.frames.last() {
+            if frame.pos < frame.end {
+                // Neither a directive nor a name (a macro call, say) can continue an
+                // expression, so neither is run here.
+                if let Some(tok) = frame.tokens.get(frame.pos)
+                    && matches!(tok.kind, TokenKind::Directive(_) | TokenKind::Ident(_))
+                {
+                    return Ok(tok.clone());
+                }
+                break;
+            }
+            if self.frames.len() == 1 || self.conds.len() > frame.cond_base {
+                break;
+            }
+            self.pop_frame();
+        }
+        self.peek()
+    }
+
+    /// Consumes an operator found by [`Evaluator::peek_operator`].
+    pub(super) fn eat_operator(
+        &mut self,
+        p: crate::lang::syntax::Punct,
+    ) -> Result<bool, Diagnostic> {
+        if self.peek_operator()?.is_punct(p) {
+            self.next()?;
+            Ok(true)
+        } else {
+            Ok(false)
+        }
+    }
+
+    pub(super) fn next(&mut self) -> Result<Token, Diagnostic> {
+        let tok = self.peek()?;
+        if tok.kind != TokenKind::Eof {
+            self.advance();
+        }
+        Ok(tok)
+    }
+
+    pub(super) fn advance(&mut self) {
+        if let Some(f) = self.frames.last_mut() {
+            f.pos += 1;
+        }
+    }
+
+    /// The next token of the current frame as written: no directives, no macro expansion.
+    /// For names that follow `#declare`, `#ifdef` and the like.
+    pub(super) fn raw_next(&mut self) -> Token {
+        let Some(frame) = self.frames.last_mut() else {
+            return Token {
+                kind: TokenKind::Eof,
+                span: Span::DETACHED,
+            };
+        };
+        if frame.pos >= frame.end {
+            return Token {
+                kind: TokenKind::Eof,
+                span: frame.eof,
+            };
+        }
+        frame.pos += 1;
+        frame.tokens[frame.pos - 1].clone()
+    }
+
+    pub(super) fn raw_peek(&self, ahead: usize) -> Option<&Token> {
+        let frame = self.frames.last()?;
+        if frame.pos + ahead >= frame.end {
+            return None;
+        }
+        frame.tokens.get(frame.pos + ahead)
+    }
+
+    pub(super) fn pop_frame(&mut self) {
+        let Some(frame) = self.frames.pop() else {
+            return;
+        };
+        match frame.kind {
+            FrameKind::Root => {}
+            FrameKind::Include { .. } => {
+                self.scopes.pop();
+            }
+            FrameKind::Macro { by_ref, .. } => {
+                let locals = self.scopes.pop().unwrap_or_default();
+                for (param, caller) in by_ref {
+                    if let Some(v) = locals.get(&param) {
+                        self.assign(caller, v.clone(), false);
+                    }
+                }
+            }
+        }
+    }
+
+    /// `#declare` assigns to the innermost scope that already has the name, else the
+    /// global one; `#local` always assigns to the innermost scope.
+    pub(super) fn assign(&mut self, name: Rc<str>, value: Value, local: bool) {
+        let last = self.scopes.len() - 1;
+        let index = if local {
+            last
+        } else {
+            (1..self.scopes.len())
+                .rev()
+                .find(|&i| self.scopes[i].contains_key(&name))
+                .unwrap_or(0)
+        };
+        self.scopes[index].insert(name, value);
+    }
+
+    /// Skips a false branch: tokens up to the `#else`/`#elseif`/`#end` (or `#case`...) that
+    /// belongs to this block, consuming that directive.
+    pub(super) fn skip_branch(&mut self, start: Span) -> Result<SkipStop, Diagnostic> {
+        let mut depth = 0usize;
+        loop {
+            let tok = self.raw_next();
+            match &tok.kind {
+                TokenKind::Eof => {
+                    return Err(self.err(start, "this block has no `#end`"));
+                }
+                TokenKind::Directive(d) => match &**d {
+                    "if" | "ifdef" | "ifndef" | "while" | "for" | "macro" | "switch" => depth += 1,
+                    "end" if depth == 0 => return Ok(SkipStop::End),
+                    "end" => depth -= 1,
+                    "else" if depth == 0 => return Ok(SkipStop::Else),
+                    "elseif" if depth == 0 => return Ok(SkipStop::ElseIf),
+                    "case" if depth == 0 => return Ok(SkipStop::Case),
+                    "range" if depth == 0 => return Ok(SkipStop::Range),
+                    "break" if depth == 0 => return Ok(SkipStop::Break),
+                    _ => {}
+                },
+                _ => {}
+            }
+        }
+    }
+
+    pub(super) fn count_iteration(&mut self, span: Span) -> Result<(), Diagnostic> {
+        self.loop_iterations += 1;
+        if self.loop_iterations > super::MAX_LOOP_ITERATIONS {
+            return Err(self.err(
+                span,
+                format!(
+                    "too many loop iterations (more than {}); is this loop endless?",
+                    super::MAX_LOOP_ITERATIONS
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    pub(super) fn current_file(&self) -> Option<FileId> {
+        self.frames.last().map(|f| f.file)
+    }
+
+    pub(super) fn frame_pos(&self) -> usize {
+        self.frames.last().map_or(0, |f| f.pos)
+    }
+
+    pub(super) fn set_frame_pos(&mut self, pos: usize) {
+        if let Some(f) = self.frames.last_mut() {
+            f.pos = pos;
+        }
+    }
+
+    pub(super) fn frame_cond_base(&self) -> usize {
+        self.frames.last().map_or(0, |f| f.cond_base)
+    }
+
+    pub(super) fn frame_tokens(&self) -> Option<(Rc<[Token]>, FileId)> {
+        self.frames.last().map(|f| (f.tokens.clone(), f.file))
+    }
+}
