@@ -1,8 +1,10 @@
-//! Appearance: what colour a surface point has (patterns, pigments) and how it answers light
-//! (finish). Everything here follows what POV-Ray 3.7 computes (shared/pov-semantics.md),
-//! including where that is not physical.
+//! Appearance: what colour a surface point has (patterns, pigments, textures) and how it
+//! answers light (finish). Everything here follows what POV-Ray 3.7 computes
+//! (shared/pov-semantics.md), including where that is not physical.
 
 pub mod finish;
 pub mod pigment;
+pub mod texture;
 
 pub use pigment::evaluate_pigment;
+pub use texture::{Layer, Layers, may_transmit, perturbed_normal, texture_layers};
