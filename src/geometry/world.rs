@@ -398,6 +398,38 @@ impl World {
         hit
     }
 
+    /// Visits every shadow-casting surface crossing on the ray within (0, t_max), in no
+    /// particular order, until `visit` returns false (the light is fully blocked). Returns
+    /// whether the walk ran to the end. Shadow rays through filtering objects need every
+    /// crossing, not only the nearest.
+    pub fn shadow_hits(&self, ray: &Ray, t_max: f64, mut visit: impl FnMut(&Hit) -> bool) -> bool {
+        let skip = flags::NO_SHADOW;
+        let mut open = true;
+        let mut each = |item: u32| {
+            self.for_each_hit(item, ray, t_max, skip, &mut |hit| {
+                if open && !visit(&hit) {
+                    open = false;
+                }
+            });
+            open
+        };
+        for &i in &self.unbounded {
+            if !each(i) {
+                return false;
+            }
+        }
+        self.bvh.traverse(
+            ray,
+            t_max,
+            |i, t_cur| if each(i) { Some(t_cur) } else { None },
+        );
+        open
+    }
+
+    pub fn primitive_material(&self, primitive: u32) -> u32 {
+        self.primitives[primitive as usize].material
+    }
+
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfacePoint {
         let p = &self.primitives[hit.primitive as usize];
         let point = ray.at(hit.t);

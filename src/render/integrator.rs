@@ -1,26 +1,29 @@
 //! The integrator answers one question: what radiance comes back along a ray. It is
-//! POV-Ray's recursive Whitted tracer (ambient, diffuse, highlights, shadow rays, mirror
-//! reflection) with two stochastic changes that keep POV-Ray's expectation: area-light
-//! visibility is estimated from one grid point drawn with POV-Ray's weights, and the
-//! deterministic adc_bailout cut is replaced by Russian roulette, which keeps the
-//! expectation of the max_trace_level-capped tree.
+//! POV-Ray's recursive Whitted tracer (ambient, diffuse, highlights, shadow rays through
+//! filtering objects, mirror reflection, refraction) with stochastic changes that keep
+//! POV-Ray's expectation: area-light visibility is estimated from one grid point drawn with
+//! POV-Ray's weights, the deterministic adc_bailout cut is replaced by Russian roulette
+//! (expectation: the max_trace_level-capped tree), and where a surface both reflects and
+//! refracts, one branch may be chosen at random in proportion to its weight.
 
 use glam::DVec3;
 
-use crate::appearance::evaluate_pigment;
 use crate::appearance::finish::{
     diffuse_factor, metallic_tint, phong_factor, reflectivity, specular_factor,
 };
-use crate::geometry::{Ray, flags, offset_point};
-use crate::scene::LightKind;
+use crate::appearance::{perturbed_normal, texture_layers};
+use crate::geometry::{Ray, SurfacePoint, flags, offset_point};
+use crate::scene::{Colour, Finish, LightKind};
 
-use super::prepared::PreparedScene;
+use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
 
 /// Below this path weight, Russian roulette starts.
 const ROULETTE_WEIGHT: f64 = 0.1;
 /// The smallest survival probability, which bounds the variance roulette can add.
 const ROULETTE_MIN_Q: f64 = 0.05;
+/// Nested media deeper than this are treated as the innermost one.
+const MEDIA_DEPTH: usize = 8;
 
 /// Rays traced, by kind, for the statistics line.
 #[derive(Clone, Copy, Debug, Default)]
@@ -42,75 +45,375 @@ impl RayCounts {
     }
 }
 
-pub struct Integrator<'a> {
-    scene: &'a PreparedScene,
-    /// Sampler dimensions used per trace level: two per light, one for roulette.
-    dims_per_level: u32,
-    pub roulette: bool,
+/// What to do where a ray tree splits into a reflected and a refracted branch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Splitting {
+    /// Trace both branches, as POV-Ray does.
+    #[default]
+    Both,
+    /// Trace one, chosen with probability proportional to its weight, divided by that
+    /// probability: the same expectation at about half the rays per level.
+    One,
 }
 
-/// Dimensions 0 and 1 are the pixel position.
-const FIRST_PATH_DIMENSION: u32 = 2;
+/// The stack of media (indices of refraction) a ray is inside, innermost last.
+#[derive(Clone, Copy, Debug)]
+struct Media {
+    iors: [f64; MEDIA_DEPTH],
+    len: usize,
+}
+
+impl Media {
+    const OUTSIDE: Media = Media {
+        iors: [1.0; MEDIA_DEPTH],
+        len: 0,
+    };
+
+    fn current(&self) -> f64 {
+        if self.len == 0 {
+            1.0
+        } else {
+            self.iors[self.len - 1]
+        }
+    }
+
+    fn entered(&self, ior: f64) -> Media {
+        let mut m = *self;
+        if m.len < MEDIA_DEPTH {
+            m.iors[m.len] = ior;
+            m.len += 1;
+        } else {
+            m.iors[MEDIA_DEPTH - 1] = ior;
+        }
+        m
+    }
+
+    fn left(&self) -> Media {
+        let mut m = *self;
+        m.len = m.len.saturating_sub(1);
+        m
+    }
+
+    /// The medium outside the one the ray is in.
+    fn outer(&self) -> f64 {
+        if self.len <= 1 {
+            1.0
+        } else {
+            self.iors[self.len - 2]
+        }
+    }
+}
+
+/// The state a ray carries down the tree.
+#[derive(Clone, Copy, Debug)]
+struct Path {
+    /// Surfaces along the path so far, 1 for the camera ray: POV-Ray returns black for a
+    /// ray whose level exceeds max_trace_level.
+    level: u32,
+    /// Product of the branch weights (max components), for roulette.
+    weight: f64,
+    skip: u8,
+    media: Media,
+}
+
+pub struct Integrator<'a> {
+    scene: &'a PreparedScene,
+    /// Sampler dimensions per trace level: two per light, then roulette and splitting.
+    dims_per_level: u32,
+    pub roulette: bool,
+    pub splitting: Splitting,
+    /// Dimensions before the path's own: the pixel position (2) and the lens (2).
+    first_path_dimension: u32,
+}
+
+const EXTRA_DIMS: u32 = 3;
 
 impl<'a> Integrator<'a> {
     pub fn new(scene: &'a PreparedScene) -> Integrator<'a> {
         Integrator {
             scene,
-            dims_per_level: 2 * scene.lights.len() as u32 + 1,
+            dims_per_level: 2 * scene.lights.len() as u32 + EXTRA_DIMS,
             roulette: true,
+            splitting: Splitting::default(),
+            first_path_dimension: 4,
         }
     }
 
     /// Radiance along a camera ray.
     pub fn radiance(&self, ray: &Ray, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
         counts.camera += 1;
-        self.trace(ray, 1, 1.0, flags::NO_IMAGE, sampler, counts)
+        let path = Path {
+            level: 1,
+            weight: 1.0,
+            skip: flags::NO_IMAGE,
+            media: Media::OUTSIDE,
+        };
+        self.trace(ray, path, sampler, counts)
     }
 
-    /// `level` counts surfaces along the path, 1 for the camera ray: POV-Ray returns black
-    /// for a ray whose level exceeds max_trace_level.
+    fn dimension(&self, level: u32, slot: u32) -> u32 {
+        self.first_path_dimension + (level - 1) * self.dims_per_level + slot
+    }
+
     fn trace(
         &self,
         ray: &Ray,
-        level: u32,
-        weight: f64,
-        skip: u8,
+        path: Path,
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
         let scene = self.scene;
-        let Some(hit) = scene.world.intersect(ray, f64::INFINITY, skip) else {
+        let Some(hit) = scene.world.intersect(ray, f64::INFINITY, path.skip) else {
             return scene.background.rgb;
         };
         let surface = scene.world.surface(ray, &hit);
         let material = &scene.materials[surface.material as usize];
-        let texture = &material.texture;
-        let finish = &texture.finish;
         let d = ray.direction.normalize();
+        let leaving = surface.normal.dot(d) > 0.0;
+        let mut colour = self.shade(d, &surface, material, path, leaving, sampler, counts);
+        if leaving && material.fade_power > 0.0 && material.fade_distance > 0.0 {
+            // The ray crossed this object's interior to get here.
+            let distance = hit.t * ray.direction.length();
+            colour *= fade(material, distance);
+        }
+        colour
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn shade(
+        &self,
+        d: DVec3,
+        surface: &SurfacePoint,
+        material: &Material,
+        path: Path,
+        leaving: bool,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        let scene = self.scene;
         let p = surface.point;
         let geometric = surface.normal;
+        let texture = &material.texture;
         // The shading normal, turned to face the incoming ray.
-        let n = if geometric.dot(d) > 0.0 {
+        let facing = if leaving {
             -surface.shading_normal
         } else {
             surface.shading_normal
         };
-        let pigment = evaluate_pigment(&texture.pigment, p);
-        let c = pigment.rgb;
-        let att = pigment.opacity(scene.legacy);
+        let n = perturbed_normal(texture, p, facing);
+        let layers = texture_layers(texture, p);
+        let mut colour = DVec3::ZERO;
+        // Layers composite top first: each lets through what its own opacity does not cover.
+        let mut through = DVec3::ONE;
+        let mut top: Option<(Colour, &Finish)> = None;
+        for layer in layers.iter() {
+            let c = layer.colour;
+            let att = c.opacity(scene.legacy);
+            let lit = self.surface_light(
+                p,
+                d,
+                n,
+                geometric,
+                c,
+                layer.finish,
+                att,
+                material,
+                path.level,
+                sampler,
+                counts,
+            );
+            colour += through * lit;
+            if top.is_none() {
+                top = Some((c, layer.finish));
+            }
+            through *= c.rgb * c.filter + DVec3::splat(c.transmit);
+            if through == DVec3::ZERO {
+                break;
+            }
+        }
+        let Some((_, finish)) = top else {
+            return colour;
+        };
+        if path.level >= scene.settings.max_trace_level {
+            return colour;
+        }
+        // Indices of refraction on the ray's side and beyond the surface.
+        let (eta_from, eta_to, beyond) = if leaving {
+            (path.media.current(), path.media.outer(), path.media.left())
+        } else {
+            (
+                path.media.current(),
+                material.ior,
+                path.media.entered(material.ior),
+            )
+        };
+        let cos_i = -d.dot(n);
+        let r = self.reflectivity(finish, cos_i, eta_from, eta_to);
+        // What the layers let through (their filter and transmit), reduced by what is
+        // reflected when the finish conserves energy.
+        let mut transmit = through;
+        if finish.conserve_energy {
+            transmit *= DVec3::ONE - r;
+        }
+        let reflect_weight = r.max_element();
+        let transmit_weight = transmit.max_element();
+        if reflect_weight <= 0.0 && transmit_weight <= 0.0 {
+            return colour;
+        }
+        // Choose which branches to follow.
+        let (mut follow_reflect, mut follow_transmit) =
+            (reflect_weight > 0.0, transmit_weight > 0.0);
+        let (mut p_reflect, mut p_transmit) = (1.0, 1.0);
+        if self.splitting == Splitting::One && follow_reflect && follow_transmit {
+            sampler.set_dimension(self.dimension(path.level, self.dims_per_level - 1));
+            let u = sampler.get_1d();
+            let pr = reflect_weight / (reflect_weight + transmit_weight);
+            if u < pr {
+                follow_transmit = false;
+                p_reflect = pr;
+            } else {
+                follow_reflect = false;
+                p_transmit = 1.0 - pr;
+            }
+        }
+        if follow_reflect {
+            let weight = path.weight * reflect_weight / p_reflect;
+            let q = self.survival(weight, finish.reflection.exponent == 1.0);
+            if q > 0.0 && self.survives(q, path.level, 0, sampler) {
+                let dir = d + 2.0 * cos_i * n;
+                let reflected = Ray::new(offset_point(p, geometric, dir), dir);
+                counts.secondary += 1;
+                let next = Path {
+                    level: path.level + 1,
+                    weight: weight / q,
+                    skip: flags::NO_REFLECTION,
+                    media: path.media,
+                };
+                let incoming = self.trace(&reflected, next, sampler, counts);
+                let e = finish.reflection.exponent;
+                let incoming = if e == 1.0 {
+                    incoming
+                } else {
+                    incoming.max(DVec3::ZERO).powf(1.0 / e)
+                };
+                colour += r * incoming / (q * p_reflect);
+            }
+        }
+        if follow_transmit {
+            let weight = path.weight * transmit_weight / p_transmit;
+            let q = self.survival(weight, true);
+            if q > 0.0 && self.survives(q, path.level, 1, sampler) {
+                let eta = eta_from / eta_to;
+                let media = beyond;
+                let straight = (eta - 1.0).abs() < 1e-12;
+                let incoming = if straight {
+                    // ior 1 continues straight and does not count a trace level.
+                    let ray = Ray::new(offset_point(p, geometric, d), d);
+                    counts.secondary += 1;
+                    let next = Path {
+                        weight: weight / q,
+                        skip: path.skip,
+                        media,
+                        ..path
+                    };
+                    self.trace(&ray, next, sampler, counts)
+                } else {
+                    match refract(d, n, eta) {
+                        Some(dir) => {
+                            let ray = Ray::new(offset_point(p, geometric, dir), dir);
+                            counts.secondary += 1;
+                            let next = Path {
+                                level: path.level + 1,
+                                weight: weight / q,
+                                skip: path.skip & !flags::NO_IMAGE,
+                                media,
+                            };
+                            self.trace(&ray, next, sampler, counts)
+                        }
+                        // Total internal reflection: POV-Ray reflects the transmitted part.
+                        None => {
+                            let dir = d + 2.0 * cos_i * n;
+                            let ray = Ray::new(offset_point(p, geometric, dir), dir);
+                            counts.secondary += 1;
+                            let next = Path {
+                                level: path.level + 1,
+                                weight: weight / q,
+                                skip: path.skip,
+                                media: path.media,
+                            };
+                            self.trace(&ray, next, sampler, counts)
+                        }
+                    }
+                };
+                colour += transmit * incoming / (q * p_transmit);
+            }
+        }
+        colour
+    }
 
+    /// Roulette's survival probability for a branch of this weight (1 when roulette is off,
+    /// the weight is large, or the branch enters non-linearly).
+    fn survival(&self, weight: f64, linear: bool) -> f64 {
+        if weight <= 0.0 {
+            return 0.0;
+        }
+        if self.roulette && linear && weight < ROULETTE_WEIGHT {
+            (weight / ROULETTE_WEIGHT).max(ROULETTE_MIN_Q)
+        } else {
+            1.0
+        }
+    }
+
+    fn survives(&self, q: f64, level: u32, branch: u32, sampler: &mut PixelSampler) -> bool {
+        if q >= 1.0 {
+            return true;
+        }
+        let lights = 2 * self.scene.lights.len() as u32;
+        sampler.set_dimension(self.dimension(level, lights + branch));
+        sampler.get_1d() < q
+    }
+
+    /// Per-channel reflectivity: `reflection {min, max falloff}`, or Fresnel for light
+    /// going from a medium of index `eta_from` into one of `eta_to`.
+    fn reflectivity(&self, finish: &Finish, cos_i: f64, eta_from: f64, eta_to: f64) -> DVec3 {
+        let refl = &finish.reflection;
+        if refl.is_zero() {
+            return DVec3::ZERO;
+        }
+        if refl.fresnel {
+            let f = fresnel(cos_i.abs(), eta_to / eta_from);
+            return f * refl.max + (1.0 - f) * refl.min;
+        }
+        reflectivity(refl.min, refl.max, refl.falloff, cos_i)
+    }
+
+    /// Ambient, emission and the direct light from every light source.
+    #[allow(clippy::too_many_arguments)]
+    fn surface_light(
+        &self,
+        p: DVec3,
+        d: DVec3,
+        n: DVec3,
+        geometric: DVec3,
+        pigment: Colour,
+        finish: &Finish,
+        att: f64,
+        material: &Material,
+        level: u32,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        let scene = self.scene;
+        let c = pigment.rgb;
         let mut colour = c * finish.ambient * scene.settings.ambient_light * att;
         colour += c * finish.emission * att;
-
         let origin = offset_point(p, geometric, -d);
-        let level_base = FIRST_PATH_DIMENSION + (level - 1) * self.dims_per_level;
         for (index, light) in scene.lights.iter().enumerate() {
             let (l, distance) = match light.kind {
                 LightKind::Parallel { point_at } => {
                     let dir = (light.location - point_at).normalize_or(DVec3::Y);
                     // Shadows reach back to the plane through the light, across its direction.
-                    let dist = (light.location - p).dot(dir);
-                    (dir, dist)
+                    (dir, (light.location - p).dot(dir))
                 }
                 _ => {
                     let to = light.location - p;
@@ -126,32 +429,28 @@ impl<'a> Integrator<'a> {
                 n_dot_l = -n_dot_l;
             }
             let mut light_colour = light.colour * light.attenuation(l, distance);
-            if light_colour == DVec3::ZERO {
+            if light_colour == DVec3::ZERO || distance.is_nan() || distance <= 0.0 {
                 continue;
             }
             if !light.shadowless {
-                let visible = match &light.area {
+                let (target_dir, target_dist) = match &light.area {
                     Some(area) => {
-                        sampler.set_dimension(level_base + 2 * index as u32);
+                        sampler.set_dimension(self.dimension(level, 2 * index as u32));
                         let (s1, s2) = sampler.get_2d();
                         let target = area.sample_point(light.location, s1, s2, l);
                         let to = target - origin;
                         let dist = to.length();
-                        counts.shadow += 1;
-                        !scene
-                            .world
-                            .occluded(&Ray::new(origin, to / dist), dist * (1.0 - 1e-9))
+                        (to / dist, dist)
                     }
-                    None => {
-                        counts.shadow += 1;
-                        !scene
-                            .world
-                            .occluded(&Ray::new(origin, l), distance * (1.0 - 1e-9))
-                    }
+                    None => (l, distance),
                 };
-                if !visible {
+                counts.shadow += 1;
+                let filter =
+                    self.shadow_filter(&Ray::new(origin, target_dir), target_dist * (1.0 - 1e-9));
+                if filter == DVec3::ZERO {
                     continue;
                 }
+                light_colour *= filter;
             }
             let diffuse = diffuse_factor(finish.diffuse, finish.brilliance, n_dot_l);
             colour += c * light_colour * (diffuse * att);
@@ -159,58 +458,108 @@ impl<'a> Integrator<'a> {
                 let highlight = phong_factor(finish.phong, finish.phong_size, n, d, l)
                     + specular_factor(finish.specular, finish.roughness, n, d, l);
                 if highlight > 0.0 {
-                    light_colour *= metallic_tint(finish.metallic, c, n_dot_l);
-                    colour += light_colour * highlight;
-                }
-            }
-        }
-
-        let reflection = &finish.reflection;
-        if !reflection.is_zero() && level < scene.settings.max_trace_level {
-            let r = reflectivity(
-                reflection.min,
-                reflection.max,
-                reflection.falloff,
-                -d.dot(n),
-            );
-            let path_weight = weight * r.max_element();
-            if path_weight > 0.0 {
-                // Roulette only where the reflected colour enters linearly; a reflection
-                // exponent makes it a non-linear function, where a random cut would bias.
-                let q =
-                    if self.roulette && path_weight < ROULETTE_WEIGHT && reflection.exponent == 1.0
-                    {
-                        (path_weight / ROULETTE_WEIGHT).max(ROULETTE_MIN_Q)
-                    } else {
-                        1.0
-                    };
-                let survive = if q < 1.0 {
-                    sampler.set_dimension(level_base + self.dims_per_level - 1);
-                    sampler.get_1d() < q
-                } else {
-                    true
-                };
-                if survive {
-                    let dir = d - 2.0 * d.dot(n) * n;
-                    let reflected = Ray::new(offset_point(p, geometric, dir), dir);
-                    counts.secondary += 1;
-                    let incoming = self.trace(
-                        &reflected,
-                        level + 1,
-                        path_weight / q,
-                        flags::NO_REFLECTION,
-                        sampler,
-                        counts,
-                    );
-                    let incoming = if reflection.exponent == 1.0 {
-                        incoming
-                    } else {
-                        incoming.max(DVec3::ZERO).powf(1.0 / reflection.exponent)
-                    };
-                    colour += r * incoming / q;
+                    colour += light_colour * metallic_tint(finish.metallic, c, n_dot_l) * highlight;
                 }
             }
         }
         colour
+    }
+
+    /// The fraction of light that reaches along a shadow ray: zero at an opaque object, and
+    /// `C * filter + transmit` per crossing of a filtering one (no refraction), as POV-Ray.
+    fn shadow_filter(&self, ray: &Ray, t_max: f64) -> DVec3 {
+        let scene = self.scene;
+        if !scene.any_transmitting {
+            return if scene.world.occluded(ray, t_max) {
+                DVec3::ZERO
+            } else {
+                DVec3::ONE
+            };
+        }
+        let mut filter = DVec3::ONE;
+        scene.world.shadow_hits(ray, t_max, |hit| {
+            let primitive = scene.world.primitive_material(hit.primitive);
+            let material = &scene.materials[primitive as usize];
+            if !material.transmits {
+                filter = DVec3::ZERO;
+                return false;
+            }
+            for layer in texture_layers(&material.texture, ray.at(hit.t)).iter() {
+                let c = layer.colour;
+                filter *= c.rgb * c.filter + DVec3::splat(c.transmit);
+            }
+            filter != DVec3::ZERO
+        });
+        filter
+    }
+}
+
+/// Unpolarised Fresnel reflectance with relative index n and cos c of the incidence angle;
+/// 1 under total internal reflection.
+pub fn fresnel(c: f64, n: f64) -> f64 {
+    let g2 = n * n + c * c - 1.0;
+    if g2 <= 0.0 {
+        return 1.0;
+    }
+    let g = g2.sqrt();
+    let a = (g - c) / (g + c);
+    let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+    (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
+}
+
+/// Heckbert's refraction: `eta = n_from / n_to`, `n` facing the incoming direction `d`;
+/// `None` under total internal reflection.
+pub fn refract(d: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
+    let c = -d.dot(n);
+    let t = 1.0 + eta * eta * (c * c - 1.0);
+    if t < 0.0 {
+        return None;
+    }
+    Some((eta * d + (eta * c - t.sqrt()) * n).normalize())
+}
+
+/// Interior fade over `distance` inside an object.
+fn fade(material: &Material, distance: f64) -> DVec3 {
+    let colour = material.fade_colour;
+    let ratio = distance / material.fade_distance;
+    if material.fade_power >= 1000.0 {
+        DVec3::new(
+            (-(1.0 - colour.x) * ratio).exp(),
+            (-(1.0 - colour.y) * ratio).exp(),
+            (-(1.0 - colour.z) * ratio).exp(),
+        )
+    } else {
+        colour + (DVec3::ONE - colour) / (1.0 + ratio.powf(material.fade_power))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fresnel_conserves_and_saturates() {
+        // Normal incidence into glass: ((n-1)/(n+1))^2 = 0.04 for n = 1.5.
+        assert!((fresnel(1.0, 1.5) - 0.04).abs() < 1e-12);
+        // Beyond the critical angle from inside glass: total reflection, no NaN.
+        let critical = (1.0f64 - (1.0 / 1.5f64).powi(2)).sqrt();
+        for c in [critical - 1e-9, critical * 0.5, 0.0] {
+            let r = fresnel(c, 1.0 / 1.5);
+            assert!(r.is_finite() && (r - 1.0).abs() < 1e-6, "{c}: {r}");
+        }
+        for c in [0.01, 0.3, 0.7, 0.99] {
+            let r = fresnel(c, 1.33);
+            assert!((0.0..=1.0).contains(&r));
+        }
+    }
+
+    #[test]
+    fn refraction_follows_snell() {
+        let d = DVec3::new(0.6, -0.8, 0.0);
+        let n = DVec3::Y;
+        let t = refract(d, n, 1.0 / 1.5).unwrap();
+        // sin_t = sin_i / 1.5
+        assert!((t.x - 0.6 / 1.5).abs() < 1e-12);
+        assert!(refract(DVec3::new(0.9, -(1.0f64 - 0.81).sqrt(), 0.0), n, 1.5).is_none());
     }
 }

@@ -4,10 +4,13 @@
 
 use glam::{DAffine3, DVec2, DVec3};
 
+use crate::appearance::may_transmit;
 use crate::geometry::{
     CsgOp, Item, PolygonData, ShapeKind, Transform, TriangleData, World, WorldBuilder, flags,
 };
-use crate::scene::{Camera, Colour, GlobalSettings, Object, ObjectFlags, Scene, Shape, Texture};
+use crate::scene::{
+    Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, Texture,
+};
 
 use super::lights::PreparedLight;
 
@@ -15,6 +18,12 @@ use super::lights::PreparedLight;
 pub struct Material {
     pub texture: Texture,
     pub double_illuminate: bool,
+    /// Whether the texture lets light through anywhere (else shadow rays stop here).
+    pub transmits: bool,
+    pub ior: f64,
+    pub fade_distance: f64,
+    pub fade_power: f64,
+    pub fade_colour: DVec3,
 }
 
 #[derive(Clone, Debug)]
@@ -26,6 +35,9 @@ pub struct PreparedScene {
     pub background: Colour,
     pub settings: GlobalSettings,
     pub legacy: bool,
+    /// Whether any material lets light through: if none does, shadow rays only ask
+    /// whether anything is in the way.
+    pub any_transmitting: bool,
 }
 
 impl PreparedScene {
@@ -35,10 +47,17 @@ impl PreparedScene {
             materials: Vec::new(),
         };
         let default_texture = Texture::default();
+        let default_interior = Interior::default();
+        let looks = Looks {
+            texture: &default_texture,
+            interior: &default_interior,
+            flags: ObjectFlags::default(),
+        };
         for object in &scene.objects {
-            builder.object(object, &default_texture, ObjectFlags::default(), true);
+            builder.object(object, looks, true);
         }
         PreparedScene {
+            any_transmitting: builder.materials.iter().any(|m| m.transmits),
             world: builder.world.build(),
             materials: builder.materials,
             lights: scene.lights.iter().map(PreparedLight::new).collect(),
@@ -78,30 +97,36 @@ fn axis_frame(from: DVec3, to: DVec3) -> Option<Transform> {
     Transform::from_affine(DAffine3::from_cols(u, v, axis, from))
 }
 
+/// What a CSG child inherits from its parents: texture, interior and flags.
+#[derive(Clone, Copy)]
+struct Looks<'a> {
+    texture: &'a Texture,
+    interior: &'a Interior,
+    flags: ObjectFlags,
+}
+
 impl Builder {
     /// Adds an object; at the top level, unions dissolve into their children so the BVH sees
     /// each part. Returns the item for use as a CSG child.
-    fn object(
-        &mut self,
-        object: &Object,
-        inherited: &Texture,
-        inherited_flags: ObjectFlags,
-        top: bool,
-    ) -> Option<Item> {
-        let texture = object.texture.as_ref().unwrap_or(inherited);
-        let f = combine(object.flags, inherited_flags);
+    fn object(&mut self, object: &Object, inherited: Looks<'_>, top: bool) -> Option<Item> {
+        let looks = Looks {
+            texture: object.texture.as_ref().unwrap_or(inherited.texture),
+            interior: object.interior.as_ref().unwrap_or(inherited.interior),
+            flags: combine(object.flags, inherited.flags),
+        };
+        let f = looks.flags;
         let clipped = !object.clipped_by.is_empty();
         let group_at_top = top && !f.inverse && !clipped;
         let item = match &object.shape {
             Shape::Union(children) if group_at_top => {
                 for child in children {
-                    self.object(child, texture, f, true);
+                    self.object(child, looks, true);
                 }
                 return None;
             }
             Shape::Mesh(mesh) if group_at_top => {
                 for t in &mesh.triangles {
-                    if let Some(i) = self.triangle(t.corners, t.normals, object, texture, f) {
+                    if let Some(i) = self.triangle(t.corners, t.normals, object, looks) {
                         self.world.add_top(i);
                     }
                 }
@@ -117,19 +142,16 @@ impl Builder {
                     Shape::Intersection(_) => CsgOp::Intersection,
                     _ => CsgOp::Difference,
                 };
+                let child_looks = Looks {
+                    flags: ObjectFlags {
+                        inverse: false,
+                        ..f
+                    },
+                    ..looks
+                };
                 let items: Vec<Item> = children
                     .iter()
-                    .filter_map(|c| {
-                        self.object(
-                            c,
-                            texture,
-                            ObjectFlags {
-                                inverse: false,
-                                ..f
-                            },
-                            false,
-                        )
-                    })
+                    .filter_map(|c| self.object(c, child_looks, false))
                     .collect();
                 if items.is_empty() {
                     return None;
@@ -140,16 +162,16 @@ impl Builder {
                 let items: Vec<Item> = mesh
                     .triangles
                     .iter()
-                    .filter_map(|t| self.triangle(t.corners, t.normals, object, texture, f))
+                    .filter_map(|t| self.triangle(t.corners, t.normals, object, looks))
                     .collect();
                 if items.is_empty() {
                     return None;
                 }
                 self.world.csg(CsgOp::Union, items, f.inverse)
             }
-            Shape::Triangle { corners } => self.triangle(*corners, None, object, texture, f)?,
+            Shape::Triangle { corners } => self.triangle(*corners, None, object, looks)?,
             Shape::SmoothTriangle { corners, normals } => {
-                self.triangle(*corners, Some(*normals), object, texture, f)?
+                self.triangle(*corners, Some(*normals), object, looks)?
             }
             shape => {
                 let (kind, local) = self.shape_kind(shape)?;
@@ -157,14 +179,18 @@ impl Builder {
                     Some(frame) => frame.then(&object.transform),
                     None => object.transform,
                 };
-                let material = self.material(texture, f);
+                let material = self.material(looks);
                 self.world.primitive(kind, &transform, material, mask(f))
             }
         };
         let item = if clipped {
             let mut parts = vec![item];
+            let clip_looks = Looks {
+                flags: ObjectFlags::default(),
+                ..looks
+            };
             for clip in &object.clipped_by {
-                parts.extend(self.object(clip, texture, ObjectFlags::default(), false));
+                parts.extend(self.object(clip, clip_looks, false));
             }
             self.world.csg(CsgOp::Clip, parts, false)
         } else {
@@ -176,10 +202,16 @@ impl Builder {
         Some(item)
     }
 
-    fn material(&mut self, texture: &Texture, f: ObjectFlags) -> u32 {
+    fn material(&mut self, looks: Looks<'_>) -> u32 {
+        let interior = looks.interior;
         self.materials.push(Material {
-            texture: texture.clone(),
-            double_illuminate: f.double_illuminate,
+            texture: looks.texture.clone(),
+            double_illuminate: looks.flags.double_illuminate,
+            transmits: may_transmit(looks.texture),
+            ior: interior.ior,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+            fade_colour: DVec3::ZERO,
         });
         (self.materials.len() - 1) as u32
     }
@@ -191,8 +223,7 @@ impl Builder {
         corners: [DVec3; 3],
         normals: Option<[DVec3; 3]>,
         object: &Object,
-        texture: &Texture,
-        f: ObjectFlags,
+        looks: Looks<'_>,
     ) -> Option<Item> {
         let t = &object.transform;
         let p = corners.map(|c| t.point(c));
@@ -207,12 +238,12 @@ impl Builder {
             e2,
             normals: normals.map(|n| n.map(|n| t.normal(n).normalize_or(DVec3::Z))),
         });
-        let material = self.material(texture, f);
+        let material = self.material(looks);
         Some(self.world.primitive(
             ShapeKind::Triangle(index),
             &Transform::IDENTITY,
             material,
-            mask(f),
+            mask(looks.flags),
         ))
     }
 
