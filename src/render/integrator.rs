@@ -13,7 +13,7 @@ use crate::appearance::finish::{
 };
 use crate::appearance::{perturbed_normal, texture_layers};
 use crate::geometry::{Ray, SurfacePoint, flags, offset_point};
-use crate::scene::{Colour, Finish, LightKind};
+use crate::scene::{Colour, Finish};
 
 use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
@@ -409,18 +409,10 @@ impl<'a> Integrator<'a> {
         colour += c * finish.emission * att;
         let origin = offset_point(p, geometric, -d);
         for (index, light) in scene.lights.iter().enumerate() {
-            let (l, distance) = match light.kind {
-                LightKind::Parallel { point_at } => {
-                    let dir = (light.location - point_at).normalize_or(DVec3::Y);
-                    // Shadows reach back to the plane through the light, across its direction.
-                    (dir, (light.location - p).dot(dir))
-                }
-                _ => {
-                    let to = light.location - p;
-                    let dist = to.length();
-                    (to / dist, dist)
-                }
+            let Some(incidence) = light.incidence(p) else {
+                continue;
             };
+            let (l, distance) = (incidence.l, incidence.distance);
             let mut n_dot_l = n.dot(l);
             if n_dot_l <= 0.0 {
                 if !material.double_illuminate {
@@ -428,8 +420,8 @@ impl<'a> Integrator<'a> {
                 }
                 n_dot_l = -n_dot_l;
             }
-            let mut light_colour = light.colour * light.attenuation(l, distance);
-            if light_colour == DVec3::ZERO || distance.is_nan() || distance <= 0.0 {
+            let mut light_colour = light.colour * incidence.factor;
+            if light_colour == DVec3::ZERO {
                 continue;
             }
             if !light.shadowless {

@@ -55,36 +55,93 @@ impl PreparedLight {
         }
     }
 
-    /// Colour arriving from a light at `distance`, before shadows: fade and spotlight cone.
-    pub fn attenuation(&self, to_light: DVec3, distance: f64) -> f64 {
-        let mut a = 1.0;
+    /// Where the light comes from as seen from `p`, how far a shadow ray must go, and the
+    /// factor (fade, spotlight cone, cylinder) on its colour before shadows; `None` where the
+    /// light cannot reach (outside a cone or cylinder): no shadow ray is spent there.
+    pub fn incidence(&self, p: DVec3) -> Option<Incidence> {
+        let (l, distance, fade_distance) = match self.kind {
+            LightKind::Parallel { point_at } | LightKind::Cylinder { point_at, .. } => {
+                let l = (self.location - point_at).normalize_or(DVec3::Y);
+                // Shadows reach back to the plane through the light, across its direction;
+                // fading is measured along the axis too.
+                let along = (self.location - p).dot(l).max(0.0);
+                (l, along, along)
+            }
+            LightKind::Point | LightKind::Spot { .. } => {
+                let to = self.location - p;
+                let d = to.length();
+                if d.is_nan() || d <= 0.0 {
+                    return None;
+                }
+                (to / d, d, d)
+            }
+        };
+        let mut factor = 1.0;
         if self.fade_power > 0.0 && self.fade_distance > 0.0 {
-            a *= 2.0 / (1.0 + (distance / self.fade_distance).powf(self.fade_power));
+            factor *= 2.0 / (1.0 + (fade_distance / self.fade_distance).powf(self.fade_power));
         }
-        if let LightKind::Spot {
-            point_at,
-            radius,
-            falloff,
-            tightness,
-        } = self.kind
-        {
-            let axis = (point_at - self.location).normalize_or(DVec3::Z);
-            let cos = (-to_light).dot(axis);
-            let cos_radius = radius.to_radians().cos();
-            let cos_falloff = falloff.to_radians().cos();
-            if cos < cos_falloff {
-                return 0.0;
+        match self.kind {
+            LightKind::Spot {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            } => {
+                let axis = (point_at - self.location).normalize_or(DVec3::Z);
+                let cos = (-l).dot(axis);
+                let cos_radius = radius.to_radians().cos();
+                let cos_falloff = falloff.to_radians().cos();
+                if cos < cos_falloff {
+                    return None;
+                }
+                if tightness > 0.0 {
+                    factor *= cos.max(0.0).powf(tightness);
+                }
+                if cos < cos_radius {
+                    factor *= smoothstep((cos - cos_falloff) / (cos_radius - cos_falloff));
+                }
             }
-            if tightness > 0.0 {
-                a *= cos.max(0.0).powf(tightness);
+            LightKind::Cylinder {
+                radius,
+                falloff,
+                tightness,
+                ..
+            } => {
+                let rel = p - self.location;
+                let off_axis = (rel - rel.dot(-l) * -l).length();
+                if off_axis >= falloff {
+                    return None;
+                }
+                if tightness > 0.0 {
+                    factor *= (1.0 - off_axis / falloff).powf(tightness);
+                }
+                if off_axis > radius {
+                    factor *= smoothstep((falloff - off_axis) / (falloff - radius));
+                }
             }
-            if cos < cos_radius {
-                let t = ((cos - cos_falloff) / (cos_radius - cos_falloff)).clamp(0.0, 1.0);
-                a *= t * t * (3.0 - 2.0 * t);
-            }
+            LightKind::Point | LightKind::Parallel { .. } => {}
         }
-        a
+        (factor > 0.0).then_some(Incidence {
+            l,
+            distance,
+            factor,
+        })
     }
+}
+
+/// Light arriving at a point, before shadows.
+#[derive(Clone, Copy, Debug)]
+pub struct Incidence {
+    /// Unit vector towards the light.
+    pub l: DVec3,
+    /// How far a shadow ray must reach.
+    pub distance: f64,
+    pub factor: f64,
+}
+
+fn smoothstep(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
 }
 
 impl PreparedArea {

@@ -85,10 +85,45 @@ impl std::fmt::Display for RenderError {
 
 impl std::error::Error for RenderError {}
 
-/// The primary ray through screen point (x, y) in [-1/2, 1/2]^2, y up.
-pub fn camera_ray(camera: &Camera, x: f64, y: f64) -> Ray {
+/// The primary ray through screen point (x, y) in [-1/2, 1/2]^2, y up, leaving the lens at
+/// `lens` in [0, 1)^2 (ignored for a pinhole camera). With focal blur, every ray through the
+/// same screen point meets the others on the plane through the focal point, perpendicular
+/// to the viewing direction.
+pub fn camera_ray(camera: &Camera, x: f64, y: f64, lens: (f64, f64)) -> Ray {
     let dir = camera.direction + camera.right * x + camera.up * y;
-    Ray::new(camera.location, dir.normalize_or(DVec3::Z))
+    if camera.aperture <= 0.0 {
+        return Ray::new(camera.location, dir.normalize_or(DVec3::Z));
+    }
+    let forward = camera.direction.normalize_or(DVec3::Z);
+    let focus_distance = (camera.focal_point - camera.location).dot(forward);
+    let along = dir.dot(forward);
+    if focus_distance <= 0.0 || along <= 0.0 {
+        return Ray::new(camera.location, dir.normalize_or(DVec3::Z));
+    }
+    let focus = camera.location + dir * (focus_distance / along);
+    let (dx, dy) = concentric_disc(lens.0, lens.1);
+    let radius = 0.5 * camera.aperture;
+    let origin = camera.location
+        + camera.right.normalize_or(DVec3::X) * (dx * radius)
+        + camera.up.normalize_or(DVec3::Y) * (dy * radius);
+    Ray::new(origin, (focus - origin).normalize_or(DVec3::Z))
+}
+
+/// Maps the unit square to the unit disc keeping areas and strata (Shirley and Chiu).
+fn concentric_disc(u: f64, v: f64) -> (f64, f64) {
+    let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
+    if a == 0.0 && b == 0.0 {
+        return (0.0, 0.0);
+    }
+    let (r, phi) = if a.abs() > b.abs() {
+        (a, std::f64::consts::FRAC_PI_4 * (b / a))
+    } else {
+        (
+            b,
+            std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a / b),
+        )
+    };
+    (r * phi.cos(), r * phi.sin())
 }
 
 /// Renders into a film. Each pixel's samples are taken in index order by one thread, and
@@ -131,7 +166,8 @@ pub fn render(
                     let (u, v) = sampler.get_2d();
                     let sx = (x as f64 + u) / w as f64 - 0.5;
                     let sy = 0.5 - (y as f64 + v) / h as f64;
-                    let ray = camera_ray(&scene.camera, sx, sy);
+                    let lens = sampler.get_2d();
+                    let ray = camera_ray(&scene.camera, sx, sy, lens);
                     let l = integrator.radiance(&ray, &mut sampler, &mut counts);
                     if l.is_finite() {
                         sum.add(l.to_array());

@@ -53,7 +53,8 @@ impl PreparedScene {
             interior: &default_interior,
             flags: ObjectFlags::default(),
         };
-        for object in &scene.objects {
+        let looks_like = scene.lights.iter().filter_map(|l| l.looks_like.as_deref());
+        for object in scene.objects.iter().chain(looks_like) {
             builder.object(object, looks, true);
         }
         PreparedScene {

@@ -10,6 +10,9 @@ pub struct Camera {
     pub direction: DVec3,
     pub right: DVec3,
     pub up: DVec3,
+    /// Focal blur: lens diameter (0: a pinhole) and the point that is in focus.
+    pub aperture: f64,
+    pub focal_point: DVec3,
 }
 
 impl Default for Camera {
@@ -31,6 +34,10 @@ pub struct CameraSpec {
     pub look_at: Option<DVec3>,
     /// Horizontal field of view in degrees.
     pub angle: Option<f64>,
+    pub aperture: f64,
+    pub focal_point: DVec3,
+    /// POV-Ray's rays per pixel for blur; penumbra's lens samples are the pixel's samples.
+    pub blur_samples: u32,
     pub transform: Transform,
 }
 
@@ -44,6 +51,9 @@ impl Default for CameraSpec {
             sky: DVec3::Y,
             look_at: None,
             angle: None,
+            aperture: 0.0,
+            focal_point: DVec3::ZERO,
+            blur_samples: 0,
             transform: Transform::IDENTITY,
         }
     }
@@ -82,6 +92,8 @@ impl CameraSpec {
             direction: t.vector(direction),
             right: t.vector(right),
             up: t.vector(up),
+            aperture: self.aperture,
+            focal_point: t.point(self.focal_point),
         }
     }
 }

@@ -17,6 +17,14 @@ pub enum LightKind {
     Parallel {
         point_at: DVec3,
     },
+    /// Parallel light confined to a cylinder around the axis through `location` and
+    /// `point_at`; `radius` and `falloff` are distances from the axis.
+    Cylinder {
+        point_at: DVec3,
+        radius: f64,
+        falloff: f64,
+        tightness: f64,
+    },
 }
 
 /// `area_light <axis1>, <axis2>, size1, size2 ...`: a grid of point lights POV-Ray uses
@@ -43,6 +51,9 @@ pub struct Light {
     pub shadowless: bool,
     pub fade_distance: f64,
     pub fade_power: f64,
+    /// `looks_like { object }`: already placed at the light; it is seen but does not
+    /// shadow its own light.
+    pub looks_like: Option<Box<super::Object>>,
 }
 
 impl Light {
@@ -56,6 +67,7 @@ impl Light {
             shadowless: false,
             fade_distance: 0.0,
             fade_power: 0.0,
+            looks_like: None,
         }
     }
 }

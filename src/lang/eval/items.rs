@@ -213,9 +213,30 @@ impl Evaluator<'_> {
                     self.next()?;
                     spec.angle = Some(self.float()?);
                 }
+                "aperture" => {
+                    self.next()?;
+                    spec.aperture = self.float()?.max(0.0);
+                }
+                "focal_point" => {
+                    self.next()?;
+                    spec.focal_point = self.vector3()?;
+                }
+                "blur_samples" => {
+                    self.next()?;
+                    spec.blur_samples = self.float()?.max(0.0) as u32;
+                    // POV-Ray 3.7 also takes `blur_samples min, max`.
+                    if self.eat(Punct::Comma)? {
+                        spec.blur_samples = self.float()?.max(0.0) as u32;
+                    }
+                }
+                "confidence" | "variance" => {
+                    // Settings of POV-Ray's adaptive blur sampling; penumbra samples the lens
+                    // over a pixel's samples instead.
+                    self.next()?;
+                    self.float()?;
+                }
                 "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
-                | "spherical" | "cylinder" | "mesh_camera" | "aperture" | "blur_samples"
-                | "focal_point" | "confidence" | "variance" | "normal" => {
+                | "spherical" | "cylinder" | "mesh_camera" | "normal" => {
                     return Err(self.unsupported(&tok, word));
                 }
                 _ => {
@@ -264,6 +285,7 @@ impl Evaluator<'_> {
         });
         let mut spot = matches!(light.kind, LightKind::Spot { .. });
         let mut parallel = matches!(light.kind, LightKind::Parallel { .. });
+        let mut cylinder = matches!(light.kind, LightKind::Cylinder { .. });
         let (mut point_at, mut radius, mut falloff, mut tightness) = match light.kind {
             LightKind::Point => (DVec3::Z, 30.0, 45.0, 0.0),
             LightKind::Spot {
@@ -273,6 +295,12 @@ impl Evaluator<'_> {
                 tightness,
             } => (point_at, radius, falloff, tightness),
             LightKind::Parallel { point_at } => (point_at, 30.0, 45.0, 0.0),
+            LightKind::Cylinder {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            } => (point_at, radius, falloff, tightness),
         };
         loop {
             let tok = self.peek()?;
@@ -367,22 +395,40 @@ impl Evaluator<'_> {
                     self.next()?;
                     tightness = self.float()?;
                 }
-                "cylinder" | "looks_like" | "projected_through" | "photons" => {
+                "cylinder" => {
+                    self.next()?;
+                    cylinder = true;
+                }
+                "looks_like" => {
+                    let open = self.block_start("looks_like")?;
+                    let value = self.object()?;
+                    self.block_end(open, "looks_like")?;
+                    if let Some(mut object) = value.object {
+                        // The object is modelled at the origin and travels with the light;
+                        // it must not shadow the light it surrounds.
+                        object.transform_by(&crate::scene::Transform::translate(light.location));
+                        object.flags.no_shadow = true;
+                        light.looks_like = Some(Box::new(object));
+                    }
+                }
+                "projected_through" | "photons" => {
                     return Err(self.unsupported(&tok, &word));
                 }
                 _ => {
                     if let Some(t) = self.transform_modifier()? {
                         // Keep the spotlight target in the light's kind while transforming.
-                        light.kind = kind_of(spot, parallel, point_at, radius, falloff, tightness);
+                        light.kind = kind_of(
+                            spot, parallel, cylinder, point_at, radius, falloff, tightness,
+                        );
                         light.area = has_area.then_some(pending);
                         transform_light(&mut light, &t);
                         if let Some(a) = light.area {
                             pending = a;
                         }
                         point_at = match light.kind {
-                            LightKind::Spot { point_at, .. } | LightKind::Parallel { point_at } => {
-                                point_at
-                            }
+                            LightKind::Spot { point_at, .. }
+                            | LightKind::Cylinder { point_at, .. }
+                            | LightKind::Parallel { point_at } => point_at,
                             LightKind::Point => t.point(point_at),
                         };
                         continue;
@@ -391,7 +437,9 @@ impl Evaluator<'_> {
                 }
             }
         }
-        light.kind = kind_of(spot, parallel, point_at, radius, falloff, tightness);
+        light.kind = kind_of(
+            spot, parallel, cylinder, point_at, radius, falloff, tightness,
+        );
         light.area = has_area.then_some(pending);
         self.block_end(open, "the light_source")?;
         Ok(light)
@@ -475,12 +523,20 @@ impl Evaluator<'_> {
 fn kind_of(
     spot: bool,
     parallel: bool,
+    cylinder: bool,
     point_at: DVec3,
     radius: f64,
     falloff: f64,
     tightness: f64,
 ) -> LightKind {
-    if parallel {
+    if cylinder {
+        LightKind::Cylinder {
+            point_at,
+            radius,
+            falloff,
+            tightness,
+        }
+    } else if parallel {
         LightKind::Parallel { point_at }
     } else if spot {
         LightKind::Spot {

@@ -56,7 +56,11 @@ pub fn transform_light(l: &mut Light, t: &Transform) {
     match &mut l.kind {
         crate::scene::LightKind::Point => {}
         crate::scene::LightKind::Spot { point_at, .. }
+        | crate::scene::LightKind::Cylinder { point_at, .. }
         | crate::scene::LightKind::Parallel { point_at } => *point_at = t.point(*point_at),
+    }
+    if let Some(o) = &mut l.looks_like {
+        o.transform_by(t);
     }
     if let Some(a) = &mut l.area {
         a.axis1 = t.vector(a.axis1);
