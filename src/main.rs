@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use penumbra::lang::{LoadOptions, load_scene};
 use penumbra::output::{BitDepth, write_image};
-use penumbra::render::{Progress, RenderOptions};
+use penumbra::render::{AreaLightMode, Progress, RenderOptions, Splitting};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
 
 #[derive(Parser)]
@@ -59,6 +59,14 @@ enum Command {
         /// No progress bar and no summary line.
         #[arg(short, long)]
         quiet: bool,
+        /// `pov`: POV-Ray's grid of point lights (converges to POV-Ray's image);
+        /// `continuous`: the ideal emitter the grid approximates.
+        #[arg(long, value_enum, default_value = "pov")]
+        area_lights: AreaMode,
+        /// Where a ray both reflects and refracts: trace `both` branches, or `one` chosen
+        /// at random in proportion to its weight.
+        #[arg(long, value_enum, default_value = "both")]
+        splitting: Split,
         #[command(flatten)]
         scene_args: SceneArgs,
     },
@@ -85,6 +93,18 @@ enum Command {
         #[command(flatten)]
         scene_args: SceneArgs,
     },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum AreaMode {
+    Pov,
+    Continuous,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Split {
+    Both,
+    One,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -156,6 +176,8 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             threads,
             bit_depth,
             quiet,
+            area_lights,
+            splitting,
             scene_args,
         } => {
             let output = output.unwrap_or_else(|| default_output(&scene));
@@ -170,6 +192,14 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 samples_per_pixel: spp,
                 seed,
                 threads,
+                area_lights: match area_lights {
+                    AreaMode::Pov => AreaLightMode::Pov,
+                    AreaMode::Continuous => AreaLightMode::Continuous,
+                },
+                splitting: match splitting {
+                    Split::Both => Splitting::Both,
+                    Split::One => Splitting::One,
+                },
                 ..RenderOptions::default()
             };
             let show = !quiet && std::io::stderr().is_terminal();

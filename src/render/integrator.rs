@@ -15,6 +15,7 @@ use crate::appearance::{perturbed_normal, texture_layers};
 use crate::geometry::{Ray, SurfacePoint, flags, offset_point};
 use crate::scene::{Colour, Finish};
 
+use super::lights::AreaLightMode;
 use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
 
@@ -122,19 +123,25 @@ pub struct Integrator<'a> {
     dims_per_level: u32,
     pub roulette: bool,
     pub splitting: Splitting,
+    pub area_lights: AreaLightMode,
     /// Dimensions before the path's own: the pixel position (2) and the lens (2).
     first_path_dimension: u32,
 }
 
+/// Per light and level: the shadow-test point (2) and, for area_illumination, the shading
+/// point (2).
+const DIMS_PER_LIGHT: u32 = 4;
+/// Per level after the lights: roulette for reflection and transmission, and splitting.
 const EXTRA_DIMS: u32 = 3;
 
 impl<'a> Integrator<'a> {
     pub fn new(scene: &'a PreparedScene) -> Integrator<'a> {
         Integrator {
             scene,
-            dims_per_level: 2 * scene.lights.len() as u32 + EXTRA_DIMS,
+            dims_per_level: DIMS_PER_LIGHT * scene.lights.len() as u32 + EXTRA_DIMS,
             roulette: true,
             splitting: Splitting::default(),
+            area_lights: AreaLightMode::Pov,
             first_path_dimension: 4,
         }
     }
@@ -368,7 +375,7 @@ impl<'a> Integrator<'a> {
         if q >= 1.0 {
             return true;
         }
-        let lights = 2 * self.scene.lights.len() as u32;
+        let lights = DIMS_PER_LIGHT * self.scene.lights.len() as u32;
         sampler.set_dimension(self.dimension(level, lights + branch));
         sampler.get_1d() < q
     }
@@ -409,7 +416,24 @@ impl<'a> Integrator<'a> {
         colour += c * finish.emission * att;
         let origin = offset_point(p, geometric, -d);
         for (index, light) in scene.lights.iter().enumerate() {
-            let Some(incidence) = light.incidence(p) else {
+            let incidence = match &light.area {
+                // Shading from one grid point, drawn with equal weights, independently of
+                // the shadow test: the product of the average shading and the visibility.
+                Some(area) if light.area_illumination => {
+                    sampler.set_dimension(self.dimension(level, DIMS_PER_LIGHT * index as u32 + 2));
+                    let towards = light.location - p;
+                    let at = area.sample_point(
+                        light.location,
+                        sampler.get_2d(),
+                        towards,
+                        self.area_lights,
+                        true,
+                    );
+                    light.incidence_from(p, at)
+                }
+                _ => light.incidence(p),
+            };
+            let Some(incidence) = incidence else {
                 continue;
             };
             let (l, distance) = (incidence.l, incidence.distance);
@@ -427,9 +451,14 @@ impl<'a> Integrator<'a> {
             if !light.shadowless {
                 let (target_dir, target_dist) = match &light.area {
                     Some(area) => {
-                        sampler.set_dimension(self.dimension(level, 2 * index as u32));
-                        let (s1, s2) = sampler.get_2d();
-                        let target = area.sample_point(light.location, s1, s2, l);
+                        sampler.set_dimension(self.dimension(level, DIMS_PER_LIGHT * index as u32));
+                        let target = area.sample_point(
+                            light.location,
+                            sampler.get_2d(),
+                            light.location - p,
+                            self.area_lights,
+                            false,
+                        );
                         let to = target - origin;
                         let dist = to.length();
                         (to / dist, dist)

@@ -15,6 +15,7 @@ pub struct PreparedLight {
     pub fade_distance: f64,
     pub fade_power: f64,
     pub area: Option<PreparedArea>,
+    pub area_illumination: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -52,6 +53,7 @@ impl PreparedLight {
             fade_distance: light.fade_distance,
             fade_power: light.fade_power,
             area,
+            area_illumination: light.area_illumination && light.area.is_some(),
         }
     }
 
@@ -59,16 +61,22 @@ impl PreparedLight {
     /// factor (fade, spotlight cone, cylinder) on its colour before shadows; `None` where the
     /// light cannot reach (outside a cone or cylinder): no shadow ray is spent there.
     pub fn incidence(&self, p: DVec3) -> Option<Incidence> {
+        self.incidence_from(p, self.location)
+    }
+
+    /// As [`Self::incidence`], with the light moved to `location` (one point of an area
+    /// light, for area_illumination).
+    pub fn incidence_from(&self, p: DVec3, location: DVec3) -> Option<Incidence> {
         let (l, distance, fade_distance) = match self.kind {
             LightKind::Parallel { point_at } | LightKind::Cylinder { point_at, .. } => {
-                let l = (self.location - point_at).normalize_or(DVec3::Y);
+                let l = (location - point_at).normalize_or(DVec3::Y);
                 // Shadows reach back to the plane through the light, across its direction;
                 // fading is measured along the axis too.
-                let along = (self.location - p).dot(l).max(0.0);
+                let along = (location - p).dot(l).max(0.0);
                 (l, along, along)
             }
             LightKind::Point | LightKind::Spot { .. } => {
-                let to = self.location - p;
+                let to = location - p;
                 let d = to.length();
                 if d.is_nan() || d <= 0.0 {
                     return None;
@@ -87,7 +95,7 @@ impl PreparedLight {
                 falloff,
                 tightness,
             } => {
-                let axis = (point_at - self.location).normalize_or(DVec3::Z);
+                let axis = (point_at - location).normalize_or(DVec3::Z);
                 let cos = (-l).dot(axis);
                 let cos_radius = radius.to_radians().cos();
                 let cos_falloff = falloff.to_radians().cos();
@@ -107,7 +115,7 @@ impl PreparedLight {
                 tightness,
                 ..
             } => {
-                let rel = p - self.location;
+                let rel = p - location;
                 let off_axis = (rel - rel.dot(-l) * -l).length();
                 if off_axis >= falloff {
                     return None;
@@ -145,17 +153,43 @@ fn smoothstep(t: f64) -> f64 {
 }
 
 impl PreparedArea {
-    /// A point of the light to shadow-test, drawn with POV-Ray's grid weights from the
-    /// stratified pair (s1, s2). Jitter reuses where s fell inside its grid cell's weight,
-    /// which keeps it uniform and stratified. `towards` is the direction from the shaded
-    /// point to the light centre (for `orient`).
-    pub fn sample_point(&self, centre: DVec3, s1: f64, s2: f64, towards: DVec3) -> DVec3 {
-        let (i1, r1) = pick(&self.cdf1, s1);
-        let (i2, r2) = pick(&self.cdf2, s2);
-        let mut u = grid_coordinate(i1, self.size1, self.jitter.then_some(r1));
-        let mut v = grid_coordinate(i2, self.size2, self.jitter.then_some(r2));
+    /// A point of the light to shadow-test, from the stratified pair (s1, s2). In `pov`
+    /// mode it is a grid point drawn with POV-Ray's weights (or with equal weights when
+    /// `uniform`, as area_illumination averages the shading), jittered by where s fell inside
+    /// its grid cell's weight, which keeps the jitter uniform and stratified. In `continuous`
+    /// mode it is uniform over the light's parallelogram (or disc, if circular). `towards`
+    /// is the direction from the shaded point to the light centre (for `orient`).
+    pub fn sample_point(
+        &self,
+        centre: DVec3,
+        (s1, s2): (f64, f64),
+        towards: DVec3,
+        mode: AreaLightMode,
+        uniform: bool,
+    ) -> DVec3 {
+        let (mut u, mut v) = match mode {
+            AreaLightMode::Continuous => {
+                if self.circular {
+                    let (x, y) = super::concentric_disc(s1, s2);
+                    (0.5 * x, 0.5 * y)
+                } else {
+                    (s1 - 0.5, s2 - 0.5)
+                }
+            }
+            AreaLightMode::Pov => {
+                let ((i1, r1), (i2, r2)) = if uniform {
+                    (pick_uniform(self.size1, s1), pick_uniform(self.size2, s2))
+                } else {
+                    (pick(&self.cdf1, s1), pick(&self.cdf2, s2))
+                };
+                (
+                    grid_coordinate(i1, self.size1, self.jitter.then_some(r1)),
+                    grid_coordinate(i2, self.size2, self.jitter.then_some(r2)),
+                )
+            }
+        };
         let (mut a1, mut a2) = (self.axis1, self.axis2);
-        if self.circular {
+        if self.circular && mode == AreaLightMode::Pov {
             u += 0.001;
             v += 0.001;
             let len = (u * u + v * v).sqrt();
@@ -176,6 +210,24 @@ impl PreparedArea {
         }
         centre + a1 * u + a2 * v
     }
+}
+
+/// How area lights are sampled (`--area-lights`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AreaLightMode {
+    /// POV-Ray's grid: the expectation is exactly POV-Ray's image.
+    #[default]
+    Pov,
+    /// The ideal emitter the grid approximates, for accuracy studies.
+    Continuous,
+}
+
+/// A grid index with equal weights, and where `s` fell inside its cell.
+fn pick_uniform(n: u32, s: f64) -> (usize, f64) {
+    let n = n.max(1);
+    let x = s * n as f64;
+    let i = (x as usize).min(n as usize - 1);
+    (i, (x - i as f64).clamp(0.0, 1.0 - f64::EPSILON))
 }
 
 /// Position along one axis in [-1/2, 1/2]: grid index `i` of `n`, plus jitter of up to half

@@ -15,7 +15,8 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 pub use film::{Film, PixelSum};
-pub use integrator::{Integrator, RayCounts};
+pub use integrator::{Integrator, RayCounts, Splitting};
+pub use lights::AreaLightMode;
 pub use prepared::PreparedScene;
 pub use sampler::PixelSampler;
 
@@ -36,6 +37,8 @@ pub struct RenderOptions {
     /// Worker threads; `None` lets rayon choose.
     pub threads: Option<usize>,
     pub roulette: bool,
+    pub area_lights: AreaLightMode,
+    pub splitting: Splitting,
 }
 
 impl Default for RenderOptions {
@@ -48,6 +51,8 @@ impl Default for RenderOptions {
             sample_range: None,
             threads: None,
             roulette: true,
+            area_lights: AreaLightMode::Pov,
+            splitting: Splitting::Both,
         }
     }
 }
@@ -111,7 +116,7 @@ pub fn camera_ray(camera: &Camera, x: f64, y: f64, lens: (f64, f64)) -> Ray {
 }
 
 /// Maps the unit square to the unit disc keeping areas and strata (Shirley and Chiu).
-fn concentric_disc(u: f64, v: f64) -> (f64, f64) {
+pub(crate) fn concentric_disc(u: f64, v: f64) -> (f64, f64) {
     let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
     if a == 0.0 && b == 0.0 {
         return (0.0, 0.0);
@@ -154,6 +159,8 @@ pub fn render(
     let done = AtomicU64::new(0);
     let mut integrator = Integrator::new(scene);
     integrator.roulette = options.roulette;
+    integrator.area_lights = options.area_lights;
+    integrator.splitting = options.splitting;
     let render_tile = |&(x0, y0): &(usize, usize)| {
         let mut sampler = PixelSampler::new(spp);
         let mut counts = RayCounts::default();
