@@ -9,3 +9,8 @@ for scene in scenes/*.pov; do
   ./target/release/penumbra reference "$scene" --output "tests/references/$name.exr" \
     --width 160 --height 120 --supersample 16
 done
+# The continuous-light references: a fine grid (slow: about 7 minutes) and the corners only.
+./target/release/penumbra reference scenes/area_continuous.pov \
+  --output tests/references/area_continuous_n33.exr --declare AreaN=33
+./target/release/penumbra reference scenes/area_continuous.pov \
+  --output tests/references/area_continuous_n2.exr --declare AreaN=2

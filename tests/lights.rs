@@ -1,0 +1,209 @@
+//! Lights and termination: the continuous area-light mode against POV-Ray with a fine grid,
+//! and Russian roulette's unbiasedness, analytically and against roulette switched off.
+
+use std::path::Path;
+
+use penumbra::lang::{LoadOptions, load_scene, load_scene_source};
+use penumbra::output::Image;
+use penumbra::render::{AreaLightMode, RenderOptions};
+use penumbra::scene::Scene;
+use penumbra::study::{self, SQRT_B_THRESHOLD};
+
+const Z_STAR: f64 = 4.78;
+
+fn scene_file(name: &str, width: u32, height: u32) -> Scene {
+    let path = format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    let options = LoadOptions {
+        image_width: width,
+        image_height: height,
+        ..LoadOptions::default()
+    };
+    match load_scene(Path::new(&path), &options) {
+        Ok(l) => l.scene,
+        Err(d) => panic!("{d}"),
+    }
+}
+
+/// `k` replicates with seeds from `first_seed` on: independent of any other set that uses
+/// other seeds.
+fn replicates(scene: &Scene, options: &RenderOptions, k: u64, first_seed: u64) -> Vec<Image> {
+    (0..k)
+        .map(|i| {
+            let o = RenderOptions {
+                seed: first_seed + i,
+                ..options.clone()
+            };
+            penumbra::render_scene(scene, &o, &()).expect("renders").0
+        })
+        .collect()
+}
+
+/// POV-Ray's grid with n = 33 (2^5 + 1, no jitter) is within about 3e-4 RMS of the
+/// continuous emitter; penumbra's continuous mode must pass the statistical test against
+/// it, and must fail against a coarse 2 x 2 grid (the light's four corners).
+#[test]
+fn continuous_area_lights_converge_to_a_fine_povray_grid() {
+    let scene = scene_file("area_continuous.pov", 160, 120);
+    let options = RenderOptions {
+        width: 160,
+        height: 120,
+        samples_per_pixel: 64,
+        area_lights: AreaLightMode::Continuous,
+        ..RenderOptions::default()
+    };
+    let images = replicates(&scene, &options, 4, 500);
+    let root = env!("CARGO_MANIFEST_DIR");
+    let fine = study::read_reference(Path::new(&format!(
+        "{root}/tests/references/area_continuous_n33.exr"
+    )))
+    .expect("reference");
+    let v = study::evaluate(&images, &fine.full, &fine.half).expect("comparable");
+    println!("continuous vs POV-Ray n=33: {v}");
+    assert!(v.passes(SQRT_B_THRESHOLD), "{v}");
+    let coarse = study::read_reference(Path::new(&format!(
+        "{root}/tests/references/area_continuous_n2.exr"
+    )))
+    .expect("reference");
+    let v = study::evaluate(&images, &coarse.full, &coarse.half).expect("comparable");
+    println!("continuous vs POV-Ray n=2: {v}");
+    assert!(
+        !v.passes(SQRT_B_THRESHOLD),
+        "the coarse grid should differ: {v}"
+    );
+}
+
+/// Mean and variance of the sample mean of every pixel, over a set of replicates.
+fn tile_stats(images: &[Image], x0: usize, y0: usize, size: usize) -> (f64, f64) {
+    let k = images.len() as f64;
+    let (w, h) = (images[0].width, images[0].height);
+    let mut means = Vec::new();
+    for im in images {
+        let mut sum = 0.0;
+        let mut n = 0.0;
+        for y in y0..(y0 + size).min(h) {
+            for x in x0..(x0 + size).min(w) {
+                let p = im.get(x, y);
+                sum += (p[0] + p[1] + p[2]) as f64 / 3.0;
+                n += 1.0;
+            }
+        }
+        means.push(sum / n);
+    }
+    let mean = means.iter().sum::<f64>() / k;
+    let var = means.iter().map(|m| (m - mean).powi(2)).sum::<f64>() / (k - 1.0);
+    (mean, var / k)
+}
+
+/// Upper tail of chi-square with `m` degrees of freedom (Wilson-Hilferty), enough to judge
+/// p > 1e-3.
+fn chi_square_upper_tail(x: f64, m: f64) -> f64 {
+    let z = ((x / m).powf(1.0 / 3.0) - (1.0 - 2.0 / (9.0 * m))) / (2.0 / (9.0 * m)).sqrt();
+    0.5 * erfc(z / std::f64::consts::SQRT_2)
+}
+
+fn erfc(x: f64) -> f64 {
+    // Numerical Recipes' erfc approximation (fractional error below 1.2e-7).
+    let z = x.abs();
+    let t = 1.0 / (1.0 + 0.5 * z);
+    let r = t
+        * (-z * z - 1.265_512_23
+            + t * (1.000_023_68
+                + t * (0.374_091_96
+                    + t * (0.096_784_18
+                        + t * (-0.186_288_06
+                            + t * (0.278_868_07
+                                + t * (-1.135_203_98
+                                    + t * (1.488_515_87
+                                        + t * (-0.822_152_23 + t * 0.170_872_77)))))))))
+            .exp();
+    if x >= 0.0 { r } else { 2.0 - r }
+}
+
+/// Russian roulette keeps the expectation: replicates with it on and off agree tile by
+/// tile (delta = 0, z* = 4.78) and in the chi-square aggregate (p > 1e-3).
+#[test]
+fn roulette_on_and_off_agree() {
+    let scene = scene_file("reflection.pov", 96, 72);
+    let base = RenderOptions {
+        width: 96,
+        height: 72,
+        samples_per_pixel: 16,
+        ..RenderOptions::default()
+    };
+    let on = replicates(&scene, &base, 8, 500);
+    let off = replicates(
+        &scene,
+        &RenderOptions {
+            roulette: false,
+            ..base.clone()
+        },
+        8,
+        600,
+    );
+    let tile = 8;
+    let (mut chi2, mut m, mut worst) = (0.0, 0.0, 0.0f64);
+    for y0 in (0..72).step_by(tile) {
+        for x0 in (0..96).step_by(tile) {
+            let (a, va) = tile_stats(&on, x0, y0, tile);
+            let (b, vb) = tile_stats(&off, x0, y0, tile);
+            let se = (va + vb).sqrt();
+            if se == 0.0 {
+                assert_eq!(a, b, "deterministic tile differs at ({x0}, {y0})");
+                continue;
+            }
+            let z = (a - b) / se;
+            worst = worst.max(z.abs());
+            chi2 += z * z;
+            m += 1.0;
+        }
+    }
+    let p = chi_square_upper_tail(chi2, m);
+    println!("roulette on/off: {m} tiles, chi2 {chi2:.1}, p {p:.3}, worst |z| {worst:.2}");
+    assert!(worst <= Z_STAR, "a tile differs: |z| = {worst}");
+    assert!(p > 1e-3, "chi-square {chi2} over {m} tiles, p = {p}");
+}
+
+/// Two parallel mirrors of reflectivity rho, each glowing with Le: a ray bouncing between
+/// them until the depth cap D sees Le (1 - rho^D) / (1 - rho), roulette or not.
+#[test]
+fn two_mirrors_give_the_geometric_series() {
+    let (le, rho, depth) = (0.1f64, 0.7f64, 20u32);
+    let source = format!(
+        "#version 3.7;
+global_settings {{ assumed_gamma 1.0 max_trace_level {depth} }}
+camera {{ location <0, 0, 0> direction z right x up y }}
+#declare F = finish {{ ambient 1 diffuse 0 reflection {rho} }}
+plane {{ z, 1 pigment {{ rgb {le} }} finish {{ F }} }}
+plane {{ z, -1 pigment {{ rgb {le} }} finish {{ F }} }}
+"
+    );
+    let options = LoadOptions {
+        image_width: 8,
+        image_height: 8,
+        ..LoadOptions::default()
+    };
+    let scene = load_scene_source("mirrors.pov", &source, &options)
+        .expect("loads")
+        .scene;
+    let expected = le * (1.0 - rho.powi(depth as i32)) / (1.0 - rho);
+    let render = RenderOptions {
+        width: 8,
+        height: 8,
+        samples_per_pixel: 4096,
+        ..RenderOptions::default()
+    };
+    let (image, _) = penumbra::render_scene(&scene, &render, &()).expect("renders");
+    // Per-pixel means are independent estimates; their spread gives the standard error.
+    let values: Vec<f64> = image.pixels.iter().map(|p| p[0] as f64).collect();
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    let se = (var / n).sqrt();
+    println!("mirrors: mean {mean:.6}, expected {expected:.6}, standard error {se:.2e}");
+    // Roulette must actually have been at work: the per-pixel values vary.
+    assert!(var > 0.0, "no randomness: roulette never ran");
+    assert!(
+        (mean - expected).abs() <= Z_STAR * se + 1e-6,
+        "mean {mean} vs {expected} (se {se})"
+    );
+}
