@@ -36,6 +36,9 @@ pub struct RenderOptions {
     /// Worker threads; `None` lets rayon choose.
     pub threads: Option<usize>,
     pub roulette: bool,
+    /// Stratified jittered samples (the default); false draws independent uniform samples,
+    /// for convergence studies that need the N^-1/2 baseline.
+    pub stratified: bool,
 }
 
 impl Default for RenderOptions {
@@ -48,6 +51,7 @@ impl Default for RenderOptions {
             sample_range: None,
             threads: None,
             roulette: true,
+            stratified: true,
         }
     }
 }
@@ -119,7 +123,11 @@ pub fn render(
     let mut integrator = Integrator::new(scene);
     integrator.roulette = options.roulette;
     let render_tile = |&(x0, y0): &(usize, usize)| {
-        let mut sampler = PixelSampler::new(spp);
+        let mut sampler = if options.stratified {
+            PixelSampler::new(spp)
+        } else {
+            PixelSampler::independent(spp)
+        };
         let mut counts = RayCounts::default();
         let mut sums = Vec::with_capacity(TILE * TILE);
         let mut non_finite = Vec::new();
