@@ -189,10 +189,16 @@ fn draw_error_chart<DB: DrawingBackend>(
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], grey));
     }
     for (index, (label, value)) in chart.floors.iter().enumerate() {
+        let c = colour(3 + index);
         if *value <= 0.0 || !value.is_finite() {
+            // Nothing to draw on a log axis, but the legend still says it was measured.
+            ctx.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())?
+                .label(format!("{label} = 0 (not drawn)"))
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
+                });
             continue;
         }
-        let c = colour(3 + index);
         ctx.draw_series(DashedLineSeries::new(
             [(x0, *value), (x1, *value)],
             10,
@@ -217,7 +223,13 @@ fn draw_error_chart<DB: DrawingBackend>(
     for curve in &chart.curves {
         let c = colour(curve.colour);
         let width = if curve.secondary { 1 } else { 2 };
-        let points: Vec<(f64, f64)> = curve.points.iter().map(|p| (p.x, p.y)).collect();
+        // Zeros (a bias estimate clamped at 0) have no place on a log axis.
+        let points: Vec<(f64, f64)> = curve
+            .points
+            .iter()
+            .filter(|p| p.y > 0.0)
+            .map(|p| (p.x, p.y))
+            .collect();
         ctx.draw_series(LineSeries::new(points.clone(), c.stroke_width(width)))?
             .label(curve.label.as_str())
             .legend(move |(x, y)| {
@@ -235,7 +247,7 @@ fn draw_error_chart<DB: DrawingBackend>(
             curve
                 .points
                 .iter()
-                .filter(|p| p.high > p.low)
+                .filter(|p| p.high > p.low && p.low > 0.0)
                 .map(|p| PathElement::new(vec![(p.x, p.low), (p.x, p.high)], c.mix(0.6))),
         )?;
     }
