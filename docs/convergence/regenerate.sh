@@ -59,7 +59,9 @@ means, the reference's own error subtracted; drawn only when above zero) and the
 floor sqrt(MSE - V), and the red crosses POV-Ray at \`-A\`, \`+A0.3\`, \`+A0.3 +AM2 +R3\` and
 \`+A0.3 +AM2 +R4\`. "Time to reach" interpolates each method's lower envelope linearly on
 the log-log curve; the speed-up is POV-Ray's time over penumbra's, a lower bound (">") when
-POV-Ray never reaches the target.
+POV-Ray never reaches the target. At 160x120 every render here takes well under a second,
+so on a shared machine these speed-ups move by up to 2-3x between runs: read them as orders
+of magnitude, and the errors (which do not depend on the machine) as exact.
 
 ## Time to reach RMSE 0.01 and 0.005
 

@@ -261,12 +261,10 @@ fn draw_error_chart<DB: DrawingBackend>(
         )?
         .label("POV-Ray (quality settings)")
         .legend(move |(x, y)| Cross::new((x + 10, y), 6, pov.stroke_width(2)));
+        // Labels sit beside their cross, not on it, so the sign of "-A" stays readable.
         ctx.draw_series(chart.markers.iter().map(|m| {
-            Text::new(
-                m.label.clone(),
-                (m.x, m.y),
-                (FONT, 13).into_font().color(&pov),
-            )
+            EmptyElement::at((m.x, m.y))
+                + Text::new(m.label.clone(), (9, -4), (FONT, 13).into_font().color(&pov))
         }))?;
     }
     ctx.configure_series_labels()
