@@ -11,6 +11,7 @@ use penumbra::lang::{LoadOptions, load_scene};
 use penumbra::output::{BitDepth, write_image};
 use penumbra::render::{AreaLightMode, Progress, RenderOptions, Splitting};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
+use penumbra::study::{compare as study_compare, converge as study_converge};
 
 #[derive(Parser)]
 #[command(
@@ -90,6 +91,57 @@ enum Command {
         height: u32,
         #[arg(long, default_value_t = 16)]
         supersample: u32,
+        #[command(flatten)]
+        scene_args: SceneArgs,
+    },
+    /// Compare an image with a reference (EXR linear, PNG decoded from sRGB): RMSE, relMSE,
+    /// mean and max absolute error; with --replicates, noise sqrt(V) and bias sqrt(B) apart.
+    Compare {
+        /// The image to judge (the first replicate).
+        image: PathBuf,
+        /// The reference; a `penumbra reference` EXR also lends its k/2 layer to the bias.
+        reference: PathBuf,
+        /// More independent renders of the same scene (different seeds).
+        #[arg(long, num_args = 1.., value_name = "IMAGE")]
+        replicates: Vec<PathBuf>,
+        /// Write the signed difference (mean of the images minus the reference) as a PNG.
+        #[arg(long, value_name = "OUT.png")]
+        diff: Option<PathBuf>,
+        /// Colour scale of --diff: +-this maps to full red/blue (default: the 99th
+        /// percentile of |difference|).
+        #[arg(long, value_name = "S")]
+        diff_scale: Option<f64>,
+    },
+    /// Error against time: K seeds at each sample count against a reference, optionally
+    /// POV-Ray at its quality settings; writes a CSV, charts (SVG, PNG) and a summary.
+    Converge {
+        scene: PathBuf,
+        /// A reference written by `penumbra reference` (fixes the image size).
+        #[arg(long)]
+        reference: PathBuf,
+        /// Samples per pixel, comma-separated.
+        #[arg(long, value_delimiter = ',', default_value = "1,4,16,64,256")]
+        spp: Vec<u32>,
+        /// Replicates (seeds) per sample count, at least 2.
+        #[arg(long, default_value_t = 4)]
+        seeds: u32,
+        /// Also time POV-Ray at -A, +A0.3, +AM2 +R3 and +AM2 +R4.
+        #[arg(long)]
+        povray: bool,
+        #[arg(long, default_value = "converge")]
+        output_dir: PathBuf,
+        /// Threads for penumbra and POV-Ray (default: one per core).
+        #[arg(long)]
+        threads: Option<usize>,
+        /// Independent samples instead of stratified ones (the N^-1/2 baseline).
+        #[arg(long)]
+        independent: bool,
+        /// Target errors for the time-to-reach table, comma-separated.
+        #[arg(long, value_delimiter = ',', default_value = "0.01,0.005")]
+        targets: Vec<f64>,
+        /// No progress lines.
+        #[arg(short, long)]
+        quiet: bool,
         #[command(flatten)]
         scene_args: SceneArgs,
     },
@@ -282,6 +334,78 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 reference.povray_seconds
             );
             Ok(ExitCode::SUCCESS)
+        }
+        Command::Compare {
+            image,
+            reference,
+            replicates,
+            diff,
+            diff_scale,
+        } => {
+            let target =
+                study_compare::read_target(&reference).map_err(|e| format!("reference: {e}"))?;
+            let mut images = Vec::new();
+            for path in std::iter::once(&image).chain(&replicates) {
+                let target = study_compare::read_target(path).map_err(|e| format!("image: {e}"))?;
+                images.push(target.image);
+            }
+            let comparison =
+                study_compare::compare_to(&images, &target).map_err(|e| e.to_string())?;
+            print!("{comparison}");
+            if let Some(path) = diff {
+                let scale = study_compare::write_diff(&path, &images, &target.image, diff_scale)
+                    .map_err(|e| e.to_string())?;
+                println!("{}: signed difference, scale +-{scale:.5}", path.display());
+            }
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Converge {
+            scene,
+            reference,
+            spp,
+            seeds,
+            povray,
+            output_dir,
+            threads,
+            independent,
+            targets,
+            quiet,
+            scene_args,
+        } => {
+            let request = study_converge::ConvergeRequest {
+                scene,
+                declares: scene_args.declares,
+                include_paths: scene_args.include_paths,
+                reference,
+                spp,
+                seeds,
+                povray,
+                output_dir: output_dir.clone(),
+                threads,
+                stratified: !independent,
+                targets,
+            };
+            let log = StderrLog { quiet };
+            let report = study_converge::converge(&request, &log).map_err(|e| e.to_string())?;
+            print!("{}", study_converge::summary_markdown(&report));
+            println!(
+                "wrote {}/converge.csv, error_vs_time.svg/.png, error_vs_spp.svg/.png, summary.md",
+                output_dir.display()
+            );
+            Ok(ExitCode::SUCCESS)
+        }
+    }
+}
+
+/// Progress lines on stderr, one per replicate, so a long study shows where it is.
+struct StderrLog {
+    quiet: bool,
+}
+
+impl study_converge::Log for StderrLog {
+    fn line(&self, text: &str) {
+        if !self.quiet {
+            eprintln!("{text}");
         }
     }
 }

@@ -39,6 +39,9 @@ pub struct RenderOptions {
     pub roulette: bool,
     pub area_lights: AreaLightMode,
     pub splitting: Splitting,
+    /// Stratified jittered samples (the default); false draws independent uniform samples,
+    /// for convergence studies that need the N^-1/2 baseline.
+    pub stratified: bool,
 }
 
 impl Default for RenderOptions {
@@ -53,6 +56,7 @@ impl Default for RenderOptions {
             roulette: true,
             area_lights: AreaLightMode::Pov,
             splitting: Splitting::Both,
+            stratified: true,
         }
     }
 }
@@ -162,7 +166,11 @@ pub fn render(
     integrator.area_lights = options.area_lights;
     integrator.splitting = options.splitting;
     let render_tile = |&(x0, y0): &(usize, usize)| {
-        let mut sampler = PixelSampler::new(spp);
+        let mut sampler = if options.stratified {
+            PixelSampler::new(spp)
+        } else {
+            PixelSampler::independent(spp)
+        };
         let mut counts = RayCounts::default();
         let mut sums = Vec::with_capacity(TILE * TILE);
         let mut non_finite = Vec::new();

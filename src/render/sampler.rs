@@ -19,6 +19,10 @@ pub struct PixelSampler {
     /// `samples_per_pixel = nx * ny`, the 2D strata grid (nx <= ny, as square as divides).
     nx: u32,
     ny: u32,
+    /// False: every value is an independent uniform draw (no strata), the baseline whose
+    /// noise falls exactly as N^-1/2, against which the convergence tests measure what
+    /// stratification gains.
+    stratified: bool,
 }
 
 impl PixelSampler {
@@ -36,6 +40,15 @@ impl PixelSampler {
             dimension: 0,
             nx,
             ny: spp / nx,
+            stratified: true,
+        }
+    }
+
+    /// The same streams without strata: sample values are independent across indices.
+    pub fn independent(samples_per_pixel: u32) -> PixelSampler {
+        PixelSampler {
+            stratified: false,
+            ..PixelSampler::new(samples_per_pixel)
         }
     }
 
@@ -61,6 +74,9 @@ impl PixelSampler {
     pub fn get_1d(&mut self) -> f64 {
         let (perm_seed, mut rng) = self.stream(self.dimension);
         self.dimension += 1;
+        if !self.stratified {
+            return unit_f64(&mut rng);
+        }
         let n = self.samples_per_pixel;
         let stratum = permute(self.index, n, perm_seed);
         (stratum as f64 + unit_f64(&mut rng)) / n as f64
@@ -70,10 +86,13 @@ impl PixelSampler {
     pub fn get_2d(&mut self) -> (f64, f64) {
         let (perm_seed, mut rng) = self.stream(self.dimension);
         self.dimension += 2;
-        let stratum = permute(self.index, self.samples_per_pixel, perm_seed);
-        let (sx, sy) = (stratum % self.nx, stratum / self.nx);
         let jx = unit_f64(&mut rng);
         let jy = unit_f64(&mut rng);
+        if !self.stratified {
+            return (jx, jy);
+        }
+        let stratum = permute(self.index, self.samples_per_pixel, perm_seed);
+        let (sx, sy) = (stratum % self.nx, stratum / self.nx);
         (
             (sx as f64 + jx) / self.nx as f64,
             (sy as f64 + jy) / self.ny as f64,
@@ -196,6 +215,21 @@ mod tests {
         let forward: Vec<u32> = (0..16).collect();
         let backward: Vec<u32> = (0..16).rev().collect();
         assert_eq!(values(&forward), values(&backward));
+    }
+
+    #[test]
+    fn independent_mode_ignores_strata() {
+        // With 64 samples in 64 strata, stratified values fill every stratum once; 64
+        // independent uniforms leave about 64 (1 - 1/64)^64 = 23 strata empty, and fewer than
+        // 10 empty has probability below 1e-6.
+        let mut s = PixelSampler::independent(64);
+        let mut hits = [0u32; 64];
+        for i in 0..64 {
+            s.start(3, 4, i, 7);
+            hits[(s.get_1d() * 64.0) as usize] += 1;
+        }
+        let empty = hits.iter().filter(|&&h| h == 0).count();
+        assert!(empty >= 10, "{empty} empty strata: {hits:?}");
     }
 
     #[test]

@@ -2,6 +2,9 @@
 //! converged reference (see docs on testing statistics), and the reference renderer that
 //! drives the installed `povray`.
 
+pub mod charts;
+pub mod compare;
+pub mod converge;
 pub mod metrics;
 pub mod reference;
 mod tempdir;
@@ -12,7 +15,7 @@ pub use self::metrics::{
     tile_test,
 };
 pub use self::reference::{
-    Reference, ReferenceRequest, read_reference, render_reference, write_reference,
+    Reference, ReferenceRequest, read_reference, render_povray, render_reference, write_reference,
 };
 
 use crate::output::OutputError;
@@ -51,6 +54,12 @@ pub enum StudyError {
     },
     /// A reference file lacks what a reference must hold.
     BadReferenceFile { path: PathBuf, message: String },
+    /// The scene could not be loaded; the diagnostic, formatted.
+    Scene(String),
+    /// penumbra could not render the scene.
+    Render(String),
+    /// A chart or difference image could not be drawn or written.
+    Chart(String),
 }
 
 impl fmt::Display for StudyError {
@@ -96,6 +105,9 @@ impl fmt::Display for StudyError {
             StudyError::BadReferenceFile { path, message } => {
                 write!(f, "{}: not a penumbra reference: {message}", path.display())
             }
+            StudyError::Scene(diagnostic) => write!(f, "{diagnostic}"),
+            StudyError::Render(message) => write!(f, "render failed: {message}"),
+            StudyError::Chart(message) => write!(f, "cannot draw chart: {message}"),
         }
     }
 }

@@ -67,46 +67,107 @@ pub struct Reference {
 /// Renders `req` at k and at k/2 and box-filters both down to width x height.
 pub fn render_reference(req: &ReferenceRequest) -> Result<Reference, StudyError> {
     validate(req)?;
-    let povray = find_povray()?;
-    let scene = std::fs::canonicalize(&req.scene).map_err(|source| StudyError::Io {
-        path: req.scene.clone(),
-        source,
-    })?;
-    if !scene.is_file() {
-        return Err(StudyError::InvalidRequest(format!(
-            "{} is not a file",
-            scene.display()
-        )));
-    }
-    let mut include_paths = Vec::new();
-    if let Some(folder) = scene.parent() {
-        include_paths.push(folder.to_path_buf());
-    }
-    for path in &req.include_paths {
-        include_paths.push(std::path::absolute(path).map_err(|source| StudyError::Io {
-            path: path.clone(),
-            source,
-        })?);
-    }
-    let dir = TempDir::new("reference").map_err(|source| StudyError::Io {
-        path: std::env::temp_dir(),
-        source,
-    })?;
-    let job = Job {
-        povray: &povray,
-        scene: &scene,
-        include_paths: &include_paths,
-        req,
-        dir: dir.path(),
-    };
-    let (full, povray_seconds) = job.render(req.supersample)?;
-    let (half, _) = job.render(req.supersample / 2)?;
+    let runner = PovrayRunner::new(req)?;
+    let full = runner.render(req.supersample, &["-A"], None)?;
+    let half = runner.render(req.supersample / 2, &["-A"], None)?.image;
+    let povray_seconds = full.seconds;
+    let full = full.image;
     Ok(Reference {
         full,
         half,
         supersample: req.supersample,
         povray_seconds,
     })
+}
+
+/// One POV-Ray render and its times.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PovrayRun {
+    pub image: Image,
+    /// Process wall time, start to exit.
+    pub seconds: f64,
+    /// POV-Ray's own parse, bounding, photon, radiosity and trace times, summed. Its
+    /// process spends a fixed ~0.6 s besides (start-up and shut-down), which at study sizes
+    /// would hide the rendering itself. `None` if the statistics could not be read.
+    pub reported_seconds: Option<f64>,
+}
+
+/// Renders `req`'s scene once at width x height (the supersample factor is ignored) with
+/// POV-Ray's own anti-aliasing options, e.g. `["+A0.3", "+AM2", "+R3"]`: one point of a
+/// speed-against-accuracy chart.
+pub fn render_povray(
+    req: &ReferenceRequest,
+    antialias: &[&str],
+    threads: Option<usize>,
+) -> Result<PovrayRun, StudyError> {
+    validate(&ReferenceRequest {
+        supersample: 2,
+        ..req.clone()
+    })?;
+    PovrayRunner::new(req)?.render(1, antialias, threads)
+}
+
+/// The installed povray, the scene and a private working directory, shared by the renders
+/// of one request.
+struct PovrayRunner<'a> {
+    povray: PathBuf,
+    scene: PathBuf,
+    include_paths: Vec<PathBuf>,
+    req: &'a ReferenceRequest,
+    dir: TempDir,
+}
+
+impl<'a> PovrayRunner<'a> {
+    fn new(req: &'a ReferenceRequest) -> Result<Self, StudyError> {
+        let povray = find_povray()?;
+        let scene = std::fs::canonicalize(&req.scene).map_err(|source| StudyError::Io {
+            path: req.scene.clone(),
+            source,
+        })?;
+        if !scene.is_file() {
+            return Err(StudyError::InvalidRequest(format!(
+                "{} is not a file",
+                scene.display()
+            )));
+        }
+        let mut include_paths = Vec::new();
+        if let Some(folder) = scene.parent() {
+            include_paths.push(folder.to_path_buf());
+        }
+        for path in &req.include_paths {
+            include_paths.push(std::path::absolute(path).map_err(|source| StudyError::Io {
+                path: path.clone(),
+                source,
+            })?);
+        }
+        let dir = TempDir::new("reference").map_err(|source| StudyError::Io {
+            path: std::env::temp_dir(),
+            source,
+        })?;
+        Ok(PovrayRunner {
+            povray,
+            scene,
+            include_paths,
+            req,
+            dir,
+        })
+    }
+
+    fn render(
+        &self,
+        factor: u32,
+        antialias: &[&str],
+        threads: Option<usize>,
+    ) -> Result<PovrayRun, StudyError> {
+        Job {
+            povray: &self.povray,
+            scene: &self.scene,
+            include_paths: &self.include_paths,
+            req: self.req,
+            dir: self.dir.path(),
+        }
+        .render(factor, antialias, threads)
+    }
 }
 
 /// Stores the k render as the main RGB image, the k/2 render as layer `half`, and k and
@@ -223,9 +284,16 @@ struct Job<'a> {
 impl Job<'_> {
     /// Runs POV-Ray at `factor` times the size and returns the block-averaged image and the
     /// wall time.
-    fn render(&self, factor: u32) -> Result<(Image, f64), StudyError> {
+    fn render(
+        &self,
+        factor: u32,
+        antialias: &[&str],
+        threads: Option<usize>,
+    ) -> Result<PovrayRun, StudyError> {
         let (width, height) = (self.req.width * factor, self.req.height * factor);
         let output_name = format!("render-{factor}.exr");
+        // A file left by an earlier run must not pass for this run's output.
+        let _ = std::fs::remove_file(self.dir.join(&output_name));
         let mut command = Command::new(self.povray);
         // POV-Ray's default I/O policy lets it write in its working directory, so it runs
         // inside the temporary directory and writes there under a relative name.
@@ -236,9 +304,13 @@ impl Job<'_> {
             .arg("+FE")
             .arg(format!("+W{width}"))
             .arg(format!("+H{height}"))
-            // No anti-aliasing, no display, no pause; no progress or statistics chatter
-            // (errors and warnings still arrive and go into the error message).
-            .args(["-A", "-D", "-P", "-GS", "-GR"]);
+            // No display, no pause, no progress chatter (errors and warnings still arrive and
+            // go into the error message); the statistics stream stays on for the times.
+            .args(antialias)
+            .args(["-D", "-P", "-GR"]);
+        if let Some(n) = threads {
+            command.arg(format!("+WT{}", n.max(1)));
+        }
         for path in self.include_paths {
             command.arg(format!("+L{}", path.display()));
         }
@@ -279,8 +351,35 @@ impl Job<'_> {
                 .ok_or_else(|| StudyError::InvalidImage {
                     what: format!("povray's output {}", exr_path.display()),
                 })?;
-        Ok((image, seconds))
+        Ok(PovrayRun {
+            image,
+            seconds,
+            reported_seconds: reported_seconds(&String::from_utf8_lossy(&output.stderr)),
+        })
     }
+}
+
+/// Sums the "(N seconds)" of POV-Ray's "... Time:" statistics lines (parse, bounding,
+/// photons, radiosity, trace); the "using N thread(s) with N CPU-seconds" lines under them
+/// are CPU time and are skipped.
+pub fn reported_seconds(statistics: &str) -> Option<f64> {
+    let mut total = None;
+    for line in statistics.lines() {
+        if !line.contains("Time:") {
+            continue;
+        }
+        let Some(open) = line.rfind('(') else {
+            continue;
+        };
+        let inside = &line[open + 1..];
+        if let Some(value) = inside
+            .strip_suffix("seconds)")
+            .and_then(|v| v.trim().parse::<f64>().ok())
+        {
+            total = Some(total.unwrap_or(0.0) + value);
+        }
+    }
+    total
 }
 
 /// The last `count` non-empty lines of POV-Ray's output (it writes most to stderr).

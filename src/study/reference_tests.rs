@@ -152,3 +152,16 @@ fn reading_a_plain_exr_as_a_reference_explains_what_is_missing() {
     let error = read_reference(&path).expect_err("not a reference");
     assert!(error.to_string().contains("half"), "{error}");
 }
+
+#[test]
+fn povray_statistics_times_are_summed() {
+    let text = "Parser Time\n  Parse Time:       0 hours  0 minutes  0 seconds (0.012 seconds)\n\
+              using 1 thread(s) with 0.011 CPU-seconds total\n\
+              Bounding Time:    0 hours  0 minutes  0 seconds (0.003 seconds)\n\
+              Photon Time:      No photons\n\
+              Trace Time:       0 hours  0 minutes  1 seconds (1.250 seconds)\n\
+              using 2 thread(s) with 2.400 CPU-seconds total\n";
+    let total = reported_seconds(text).expect("times");
+    assert!((total - 1.265).abs() < 1e-12, "{total}");
+    assert_eq!(reported_seconds("no statistics here"), None);
+}
