@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use penumbra::lang::{LoadOptions, load_scene};
+use penumbra::lang::{LoadOptions, load_scene_with};
 use penumbra::output::{BitDepth, write_image};
 use penumbra::render::{Progress, RenderOptions};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
@@ -59,6 +59,9 @@ enum Command {
         /// No progress bar and no summary line.
         #[arg(short, long)]
         quiet: bool,
+        /// Leave out features penumbra does not support (with a warning) instead of stopping.
+        #[arg(long)]
+        skip_unsupported: bool,
         #[command(flatten)]
         scene_args: SceneArgs,
     },
@@ -66,6 +69,9 @@ enum Command {
     Check {
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
+        /// Leave out features penumbra does not support (with a warning) instead of stopping.
+        #[arg(long)]
+        skip_unsupported: bool,
         #[command(flatten)]
         scene_args: SceneArgs,
     },
@@ -156,11 +162,16 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             threads,
             bit_depth,
             quiet,
+            skip_unsupported,
             scene_args,
         } => {
             let output = output.unwrap_or_else(|| default_output(&scene));
-            let loaded = load_scene(&scene, &load_options(&scene_args, width, height))
-                .map_err(|d| d.to_string())?;
+            let loaded = load_scene_with(
+                &scene,
+                &load_options(&scene_args, width, height),
+                skip_unsupported,
+            )
+            .map_err(|d| d.to_string())?;
             for w in &loaded.warnings {
                 eprintln!("{w}");
             }
@@ -206,15 +217,24 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             }
             Ok(ExitCode::SUCCESS)
         }
-        Command::Check { scenes, scene_args } => {
+        Command::Check {
+            scenes,
+            skip_unsupported,
+            scene_args,
+        } => {
             let mut failed = false;
             for path in &scenes {
-                match load_scene(path, &load_options(&scene_args, 320, 240)) {
+                let options = load_options(&scene_args, 320, 240);
+                match load_scene_with(path, &options, skip_unsupported) {
                     Ok(loaded) => {
                         for w in &loaded.warnings {
                             eprintln!("{w}");
                         }
-                        println!("{}: {}", path.display(), penumbra::summary(&loaded.scene));
+                        println!(
+                            "{}: {}",
+                            path.display(),
+                            penumbra::lang::check_summary(&loaded)
+                        );
                     }
                     Err(d) => {
                         eprintln!("{d}");

@@ -536,8 +536,8 @@ fn golden_unknown_identifier_with_hint() {
 
 #[test]
 fn golden_unsupported_feature() {
-    let e = error("#version 3.7;\n\ncylinder { 0, y, 1 }");
-    assert_eq!(e.message, "unsupported: `cylinder` is not supported yet");
+    let e = error("#version 3.7;\n\nlathe { 0, y, 1 }");
+    assert_eq!(e.message, "unsupported: `lathe` is not supported yet");
     assert_eq!((e.line(), e.column()), (Some(3), Some(1)));
     let e = error("sphere { 0, 1 normal { bumps 0.5 } }");
     assert_eq!(e.message, "unsupported: `normal` is not supported yet");
@@ -892,4 +892,180 @@ fn warning_and_error_directives() {
     let e = error("#declare N = 3;\n#if (N > 2) #error concat(\"too many: \", str(N, 0, 0)) #end");
     assert_eq!(e.message, "#error: too many: 3");
     assert_eq!((e.line(), e.column()), (Some(2), Some(13)));
+}
+
+fn load_skipping(src: &str) -> Loaded {
+    match load_inner(
+        "test.pov",
+        src,
+        &LoadOptions::default(),
+        &MemoryWorld::default(),
+        true,
+    ) {
+        Ok(l) => l,
+        Err(e) => panic!("unexpected error:\n{e}"),
+    }
+}
+
+#[test]
+fn all_model_shapes_read() {
+    let s = load(
+        "cylinder { 0, y, 1 open }
+         cone { 0, 1, y*2, 0.5 }
+         disc { x, y*2, 1, 0.5 }
+         torus { 2, 0.5 sturm }
+         quadric { <1,1,1>, 0, 0, -1 }
+         triangle { 0, x, y }
+         smooth_triangle { 0, z, x, z, y, z }
+         mesh { triangle { 0, x, y } triangle { 0, x, 2*x } inside_vector z }
+         polygon { 5, <0,0>, <1,0>, <1,1>, <0,1>, <0,0> }",
+    )
+    .scene;
+    let shapes: Vec<&Shape> = s.objects.iter().map(|o| &o.shape).collect();
+    assert_eq!(
+        shapes[0],
+        &Shape::Cylinder {
+            base: DVec3::ZERO,
+            cap: DVec3::Y,
+            radius: 1.0,
+            open: true
+        }
+    );
+    assert_eq!(
+        shapes[1],
+        &Shape::Cone {
+            base: DVec3::ZERO,
+            base_radius: 1.0,
+            cap: DVec3::new(0.0, 2.0, 0.0),
+            cap_radius: 0.5,
+            open: false
+        }
+    );
+    assert_eq!(
+        shapes[2],
+        &Shape::Disc {
+            center: DVec3::X,
+            normal: DVec3::Y,
+            radius: 1.0,
+            hole_radius: 0.5
+        }
+    );
+    assert_eq!(
+        shapes[3],
+        &Shape::Torus {
+            major: 2.0,
+            minor: 0.5
+        }
+    );
+    assert_eq!(
+        shapes[4],
+        &Shape::Quadric {
+            coefficients: [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]
+        }
+    );
+    assert!(matches!(shapes[5], Shape::Triangle { corners } if corners[1] == DVec3::X));
+    assert!(matches!(shapes[6], Shape::SmoothTriangle { normals, .. } if normals[2] == DVec3::Z));
+    match shapes[7] {
+        // The degenerate triangle is dropped silently, as POV-Ray does in meshes.
+        Shape::Mesh(m) => {
+            assert_eq!(m.triangles.len(), 1);
+            assert_eq!(m.inside_vector, Some(DVec3::Z));
+        }
+        other => panic!("expected a mesh, got {other:?}"),
+    }
+    match shapes[8] {
+        Shape::Polygon { points } => {
+            assert_eq!(points.len(), 5);
+            assert_eq!(points[2], DVec3::new(1.0, 1.0, 0.0));
+        }
+        other => panic!("expected a polygon, got {other:?}"),
+    }
+}
+
+#[test]
+fn csg_kinds_flags_and_clipping() {
+    let s = load(
+        "#declare B = box { -1, 1 }
+         difference { object { B } sphere { 0, 1.2 } inverse no_image }
+         intersection { sphere { 0, 1 } sphere { x, 1 } clipped_by { plane { y, 0 } } translate y }
+         merge { sphere { 0, 1 } sphere { x, 1 } hollow no_reflection double_illuminate }
+         sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } }",
+    )
+    .scene;
+    assert!(matches!(&s.objects[0].shape, Shape::Difference(c) if c.len() == 2));
+    assert!(s.objects[0].flags.inverse && s.objects[0].flags.no_image);
+    let clip = &s.objects[1].clipped_by;
+    assert_eq!(clip.len(), 1);
+    // The later translate moves the clipping plane too.
+    assert!(close(clip[0].transform.point(DVec3::ZERO), DVec3::Y));
+    assert!(matches!(&s.objects[2].shape, Shape::Merge(c) if c.len() == 2));
+    let f = s.objects[2].flags;
+    assert!(f.hollow && f.no_reflection && f.double_illuminate && !f.no_shadow);
+    assert!(matches!(
+        &s.objects[3].clipped_by[0].shape,
+        Shape::Box { .. }
+    ));
+}
+
+#[test]
+fn degenerate_shapes_as_povray_treats_them() {
+    let l = load("triangle { 0, x, 2*x } union { triangle { 0, y, 2*y } sphere { 0, 1 } }");
+    assert_eq!(l.scene.objects.len(), 1);
+    assert_eq!(l.warnings.len(), 2);
+    assert_eq!(l.warnings[0].message, "degenerate triangle; it is left out");
+    let e = error("sphere { 0, 1 }\n  cylinder { y, y, 1 }");
+    assert_eq!(
+        e.message,
+        "degenerate cylinder: the base point equals the cap point"
+    );
+    assert_eq!(
+        e.location.as_ref().map(|l| (l.line, l.column)),
+        Some((2, 3))
+    );
+    let e = error("polygon { 2, 0, x }");
+    assert!(e.message.contains("at least three points"), "{}", e.message);
+    let e = error("mesh { triangle { 0, x, 2*x } }");
+    assert!(e.message.contains("no (non-degenerate) triangles"));
+    let l = load("difference { sphere { 0, 1 } }");
+    assert!(l.warnings[0].message.contains("at least 2 objects"));
+}
+
+#[test]
+fn skip_unsupported_leaves_features_out() {
+    let src = "blob { threshold 0.5 sphere { 0, 1, 1 } }
+               fog { distance 3 color rgb 1 }
+               #declare T = text { ttf \"a.ttf\" \"x\" 1, 0 }
+               object { T translate x }
+               union { sphere { 0, 1 } lathe { linear_spline 2, <0,0>, <1,1> } }
+               sphere { 0, 1 photons { target } }";
+    let e = error(src);
+    assert!(e.message.starts_with("unsupported: `blob`"));
+    let l = load_skipping(src);
+    assert_eq!(l.scene.objects.len(), 2);
+    assert!(
+        l.warnings
+            .iter()
+            .all(|w| w.message.contains("not supported")),
+        "{:?}",
+        l.warnings
+    );
+    assert_eq!(l.warnings.len(), 5);
+}
+
+#[test]
+fn matrix_and_inverse_transform() {
+    let s = load(
+        "#declare T = transform { translate <1,2,3> scale 2 }
+         sphere { 0, 1 transform { T inverse } }
+         sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 4,5,6> }",
+    )
+    .scene;
+    assert!(close(
+        s.objects[0].transform.point(DVec3::new(2.0, 4.0, 6.0)),
+        DVec3::ZERO
+    ));
+    assert!(close(
+        s.objects[1].transform.point(DVec3::ZERO),
+        DVec3::new(4.0, 5.0, 6.0)
+    ));
 }

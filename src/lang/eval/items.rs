@@ -47,7 +47,16 @@ impl Evaluator<'_> {
                 let o = self.object()?;
                 self.add_object(o);
             }
-            _ if UNSUPPORTED_ITEMS.contains(&word) => return Err(self.unsupported(&tok, word)),
+            _ if UNSUPPORTED_ITEMS.contains(&word) => {
+                let word = word.to_string();
+                self.unsupported_or_skip(&tok, &word)?;
+            }
+            _ if super::objects::is_known_unsupported_shape(word)
+                && self.lookup(word).is_none() =>
+            {
+                let word = word.to_string();
+                self.unsupported_or_skip(&tok, &word)?;
+            }
             _ => {
                 if let Some(v) = self.lookup(word) {
                     let hint = match v {
@@ -121,6 +130,12 @@ impl Evaluator<'_> {
             "interior" => {
                 self.next()?;
                 Value::Interior(self.interior_body(crate::scene::Interior::default())?)
+            }
+            "material" => {
+                self.next()?;
+                let mut holder = crate::scene::Object::new(crate::scene::Shape::Union(Vec::new()));
+                self.material_body(&mut holder)?;
+                Value::Material(Box::new((holder.texture, holder.interior)))
             }
             "transform" => {
                 self.next()?;
