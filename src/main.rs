@@ -227,6 +227,7 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 let options = load_options(&scene_args, 320, 240);
                 match load_scene_with(path, &options, skip_unsupported) {
                     Ok(loaded) => {
+                        eprint!("{}", loaded.debug);
                         for w in &loaded.warnings {
                             eprintln!("{w}");
                         }

@@ -47,6 +47,8 @@ impl Default for LoadOptions {
 pub struct Loaded {
     pub scene: crate::scene::Scene,
     pub warnings: Vec<Diagnostic>,
+    /// Text from `#debug`, which POV-Ray prints on its debug stream; `check` prints it.
+    pub debug: String,
 }
 
 /// Where include files come from. One place decides what can be read, and tests substitute
@@ -191,6 +193,7 @@ fn evaluate(
     Ok(Loaded {
         scene: std::mem::take(&mut ev.scene),
         warnings: std::mem::take(&mut ev.warnings),
+        debug: std::mem::take(&mut ev.debug_output),
     })
 }
 

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Runs `penumbra check` over every POV-Ray 3.7 example scene and sorts the outcomes into
-# parsed / unsupported feature / other error / crash / timeout. Usage:
+# parsed / unsupported feature / other error / crash / timeout. SKIP=1 adds
+# --skip-unsupported (unsupported features become warnings). Usage:
 #   tests/corpus/check-all.sh [PENUMBRA_BINARY] [SCENES_DIR] [OUT_DIR]
 BIN=${1:-target/release/penumbra}
 SCENES=${2:-/usr/share/povray-3.7/scenes}
@@ -10,7 +11,7 @@ mkdir -p "$OUT"
 find -L "$SCENES" -name '*.pov' | sort | while read -r scene; do
     rel=${scene#"$SCENES"/}
     dir=$(dirname "$scene")
-    timeout 30 "$BIN" check -L "$dir" "$scene" >/dev/null 2>"$OUT/err.txt" </dev/null
+    timeout 30 "$BIN" check ${SKIP:+--skip-unsupported} -L "$dir" "$scene" >/dev/null 2>"$OUT/err.txt" </dev/null
     rc=$?
     first=$(grep -m1 -i '^error' "$OUT/err.txt")
     if [ $rc -eq 0 ]; then

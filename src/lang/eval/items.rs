@@ -39,6 +39,11 @@ impl Evaluator<'_> {
                 self.block_end(open, "the background")?;
             }
             "global_settings" => self.global_settings()?,
+            // POV-Ray still reads the old form of `#default` without the `#`.
+            "default" => {
+                self.next()?;
+                self.default_directive()?;
+            }
             "light_source" => {
                 let light = self.light_source()?;
                 self.scene.lights.push(light);
@@ -231,7 +236,8 @@ impl Evaluator<'_> {
                 "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
                 | "spherical" | "cylinder" | "mesh_camera" | "aperture" | "blur_samples"
                 | "focal_point" | "confidence" | "variance" | "normal" => {
-                    return Err(self.unsupported(&tok, word));
+                    let word = word.to_string();
+                    self.unsupported_or_skip(&tok, &word)?;
                 }
                 _ => {
                     if let Some(Value::Camera(c)) = self.lookup(word).cloned() {
@@ -383,7 +389,7 @@ impl Evaluator<'_> {
                     tightness = self.float()?;
                 }
                 "cylinder" | "looks_like" | "projected_through" | "photons" => {
-                    return Err(self.unsupported(&tok, &word));
+                    self.unsupported_or_skip(&tok, &word)?;
                 }
                 _ => {
                     if let Some(t) = self.transform_modifier()? {
@@ -479,6 +485,16 @@ impl Evaluator<'_> {
                 }
                 "irid_wavelength" => {
                     self.colour()?;
+                }
+                _ if self.skip_unsupported
+                    && super::keywords::is_keyword(&word)
+                    && self.lookup(&word).is_none() =>
+                {
+                    self.warn(
+                        tok.span,
+                        format!("unsupported: `{word}` is not supported yet; it is left out"),
+                    );
+                    self.skip_feature_body()?;
                 }
                 _ => return Err(self.stray_in_block(&tok, "global_settings")),
             }

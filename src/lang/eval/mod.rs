@@ -64,6 +64,8 @@ pub struct Evaluator<'w> {
     default_texture: crate::scene::Texture,
     /// `--skip-unsupported`: unsupported features become warnings and are left out.
     pub skip_unsupported: bool,
+    /// What `#debug` printed, in order.
+    pub debug_output: String,
     /// Shapes (and mesh triangles) made so far, against [`MAX_OBJECTS`].
     object_count: u64,
 }
@@ -92,6 +94,7 @@ impl<'w> Evaluator<'w> {
             in_vector: false,
             default_texture: crate::scene::Texture::default(),
             skip_unsupported: false,
+            debug_output: String::new(),
             object_count: 0,
         }
     }

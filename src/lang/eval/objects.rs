@@ -69,6 +69,8 @@ impl Evaluator<'_> {
         let open = self.block_start(&word)?;
         let what = format!("the {word}");
         self.count_objects(1, kw.span)?;
+        // A shape POV-Ray drops with a warning still has its modifiers read.
+        let mut dropped = false;
         let mut o = match word.as_str() {
             "sphere" => {
                 let center = self.vector3()?;
@@ -159,7 +161,8 @@ impl Evaluator<'_> {
                 if len < 1e-12 || !len.is_finite() {
                     // POV-Ray accepts it and shows nothing; say so and leave it out.
                     self.warn(s, "the disc's normal has zero length; the disc is left out");
-                    ObjectValue::default()
+                    dropped = true;
+                    shape(Shape::Union(Vec::new()))
                 } else {
                     shape(Shape::Disc {
                         center,
@@ -194,7 +197,8 @@ impl Evaluator<'_> {
                 if degenerate {
                     // As POV-Ray: a warning, and the triangle is dropped.
                     self.warn(kw.span, "degenerate triangle; it is left out");
-                    ObjectValue::default()
+                    dropped = true;
+                    shape(Shape::Union(Vec::new()))
                 } else {
                     shape(match tri.normals {
                         Some(normals) => Shape::SmoothTriangle {
@@ -228,6 +232,17 @@ impl Evaluator<'_> {
                         self.next()?;
                         *o
                     }
+                    // `object { Shapes[i] }`
+                    Some(Value::Array(_)) => match self.expr()? {
+                        (Value::Object(o), _) => *o,
+                        (Value::Unsupported(d), s) => return Err(self.err(s, d.message.clone())),
+                        (other, s) => {
+                            return Err(self.err(
+                                s,
+                                format!("expected an object, found {}", other.kind_name()),
+                            ));
+                        }
+                    },
                     Some(other) => {
                         return Err(self.err(
                             tok.span,
@@ -251,6 +266,9 @@ impl Evaluator<'_> {
         };
         self.modifiers(&mut o, &what)?;
         self.block_end(open, &what)?;
+        if dropped {
+            return Ok(ObjectValue::default());
+        }
         Ok(o)
     }
 
@@ -258,6 +276,7 @@ impl Evaluator<'_> {
     /// transforms move them too. Children without a texture keep `None` (they inherit).
     fn csg_children(&mut self, what: &str, make: fn(Vec<Object>) -> Shape) -> R<ObjectValue> {
         let first = self.peek()?.span;
+        let mut skipped = false;
         let mut children = Vec::new();
         let mut lights = Vec::new();
         loop {
@@ -265,6 +284,7 @@ impl Evaluator<'_> {
             let Some(word) = tok.ident() else { break };
             if is_object_keyword(word) {
                 let child = self.object()?;
+                skipped |= child.object.is_none() && child.lights.is_empty();
                 children.extend(child.object);
                 lights.extend(child.lights);
             } else if word == "light_source" {
@@ -272,9 +292,13 @@ impl Evaluator<'_> {
             } else if is_known_unsupported_shape(word) && self.lookup(word).is_none() {
                 let word = word.to_string();
                 self.unsupported_or_skip(&tok, &word)?;
+                skipped = true;
             } else {
                 break;
             }
+        }
+        if children.is_empty() && lights.is_empty() && skipped {
+            return Ok(ObjectValue::default());
         }
         if children.is_empty() && lights.is_empty() {
             let tok = self.peek()?;
@@ -545,7 +569,7 @@ impl Evaluator<'_> {
                         | "caustics" | "dispersion" | "dispersion_samples" | "media"),
                     ) => {
                         let w = w.to_string();
-                        return Err(self.unsupported(&tok, &w));
+                        self.unsupported_or_skip(&tok, &w)?;
                     }
                     _ => return Err(self.stray_in_block(&tok, "the interior")),
                 }
