@@ -266,7 +266,11 @@ impl Evaluator<'_> {
         };
         self.modifiers(&mut o, &what)?;
         self.block_end(open, &what)?;
-        if dropped {
+        let empty_csg = o.lights.is_empty()
+            && o.object
+                .as_ref()
+                .is_some_and(|x| x.shape.children().is_some_and(|c| c.is_empty()));
+        if dropped || empty_csg {
             return Ok(ObjectValue::default());
         }
         Ok(o)
@@ -297,13 +301,9 @@ impl Evaluator<'_> {
                 break;
             }
         }
-        if children.is_empty() && lights.is_empty() && skipped {
-            return Ok(ObjectValue::default());
-        }
-        if children.is_empty() && lights.is_empty() {
-            let tok = self.peek()?;
-            return Err(self.expected(&format!("objects inside {what}"), &tok));
-        }
+        // POV-Ray accepts an empty CSG block (a loop that made nothing, say) silently; it
+        // is left out of the scene after its modifiers are read.
+        let _ = skipped;
         let shape = make(children);
         if !matches!(shape, Shape::Union(_)) && shape.children().is_some_and(|c| c.len() < 2) {
             self.warn(first, format!("{what} should have at least 2 objects"));
@@ -762,16 +762,21 @@ impl Evaluator<'_> {
                         let base = object.interior.unwrap_or_default();
                         object.interior = Some(self.interior_body(base)?);
                     }
-                    Some(n) if matches!(self.lookup(n), Some(Value::Material(_))) => {
-                        if let Some(Value::Material(m)) = self.lookup(n).cloned() {
-                            if m.0.is_some() {
-                                object.texture = m.0;
-                            }
-                            if m.1.is_some() {
-                                object.interior = m.1;
-                            }
+                    Some(n)
+                        if matches!(self.lookup(n), Some(Value::Material(_) | Value::Array(_))) =>
+                    {
+                        // A material identifier, or an element of an array of them.
+                        let (v, s) = self.expr()?;
+                        let Value::Material(m) = v else {
+                            return Err(self
+                                .err(s, format!("expected a material, found {}", v.kind_name())));
+                        };
+                        if m.0.is_some() {
+                            object.texture = m.0;
                         }
-                        self.next()?;
+                        if m.1.is_some() {
+                            object.interior = m.1;
+                        }
                     }
                     _ => match self.transform_modifier()? {
                         Some(t) => {
