@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use penumbra::lang::{LoadOptions, load_scene};
+use penumbra::lang::{LoadOptions, load_scene_with};
 use penumbra::output::{BitDepth, write_image};
 use penumbra::render::{AreaLightMode, Progress, RenderOptions, Splitting};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
@@ -68,6 +68,9 @@ enum Command {
         /// at random in proportion to its weight.
         #[arg(long, value_enum, default_value = "both")]
         splitting: Split,
+        /// Leave out features penumbra does not support (with a warning) instead of stopping.
+        #[arg(long)]
+        skip_unsupported: bool,
         #[command(flatten)]
         scene_args: SceneArgs,
     },
@@ -75,6 +78,9 @@ enum Command {
     Check {
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
+        /// Leave out features penumbra does not support (with a warning) instead of stopping.
+        #[arg(long)]
+        skip_unsupported: bool,
         #[command(flatten)]
         scene_args: SceneArgs,
     },
@@ -230,11 +236,16 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             quiet,
             area_lights,
             splitting,
+            skip_unsupported,
             scene_args,
         } => {
             let output = output.unwrap_or_else(|| default_output(&scene));
-            let loaded = load_scene(&scene, &load_options(&scene_args, width, height))
-                .map_err(|d| d.to_string())?;
+            let loaded = load_scene_with(
+                &scene,
+                &load_options(&scene_args, width, height),
+                skip_unsupported,
+            )
+            .map_err(|d| d.to_string())?;
             for w in &loaded.warnings {
                 eprintln!("{w}");
             }
@@ -288,15 +299,25 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             }
             Ok(ExitCode::SUCCESS)
         }
-        Command::Check { scenes, scene_args } => {
+        Command::Check {
+            scenes,
+            skip_unsupported,
+            scene_args,
+        } => {
             let mut failed = false;
             for path in &scenes {
-                match load_scene(path, &load_options(&scene_args, 320, 240)) {
+                let options = load_options(&scene_args, 320, 240);
+                match load_scene_with(path, &options, skip_unsupported) {
                     Ok(loaded) => {
+                        eprint!("{}", loaded.debug);
                         for w in &loaded.warnings {
                             eprintln!("{w}");
                         }
-                        println!("{}: {}", path.display(), penumbra::summary(&loaded.scene));
+                        println!(
+                            "{}: {}",
+                            path.display(),
+                            penumbra::lang::check_summary(&loaded)
+                        );
                     }
                     Err(d) => {
                         eprintln!("{d}");

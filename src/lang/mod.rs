@@ -47,6 +47,8 @@ impl Default for LoadOptions {
 pub struct Loaded {
     pub scene: crate::scene::Scene,
     pub warnings: Vec<Diagnostic>,
+    /// Text from `#debug`, which POV-Ray prints on its debug stream; `check` prints it.
+    pub debug: String,
 }
 
 /// Where include files come from. One place decides what can be read, and tests substitute
@@ -92,13 +94,31 @@ impl World for MemoryWorld {
 
 /// Reads a scene file and everything it includes.
 pub fn load_scene(path: &Path, options: &LoadOptions) -> Result<Loaded, Diagnostic> {
+    load_scene_with(path, options, false)
+}
+
+/// Like [`load_scene`]; with `skip_unsupported`, features penumbra lacks become warnings
+/// and are left out of the scene instead of stopping it (`--skip-unsupported`). A separate
+/// entry point rather than a `LoadOptions` field, so code that builds `LoadOptions` by hand
+/// keeps compiling.
+pub fn load_scene_with(
+    path: &Path,
+    options: &LoadOptions,
+    skip_unsupported: bool,
+) -> Result<Loaded, Diagnostic> {
     let source = FileSystem.read(path).map_err(|e| {
         Diagnostic::error(
             Span::DETACHED,
             format!("cannot read \"{}\": {e}", path.display()),
         )
     })?;
-    load_with_world(&path.display().to_string(), &source, options, &FileSystem)
+    load_inner(
+        &path.display().to_string(),
+        &source,
+        options,
+        &FileSystem,
+        skip_unsupported,
+    )
 }
 
 /// Reads a scene held in memory; includes are still searched on disk.
@@ -121,11 +141,24 @@ pub fn load_with_world(
     options: &LoadOptions,
     world: &(dyn World + Sync),
 ) -> Result<Loaded, Diagnostic> {
+    load_inner(name, source, options, world, false)
+}
+
+/// [`load_with_world`] with the choice of skipping unsupported features.
+pub fn load_inner(
+    name: &str,
+    source: &str,
+    options: &LoadOptions,
+    world: &(dyn World + Sync),
+    skip_unsupported: bool,
+) -> Result<Loaded, Diagnostic> {
     std::thread::scope(|s| {
         let handle = std::thread::Builder::new()
             .name("penumbra-lang".into())
             .stack_size(EVAL_STACK_BYTES)
-            .spawn_scoped(s, || evaluate(name, source, options, world));
+            .spawn_scoped(s, || {
+                evaluate(name, source, options, world, skip_unsupported)
+            });
         match handle {
             Ok(h) => h.join().unwrap_or_else(|_| {
                 Err(Diagnostic::error(
@@ -134,7 +167,7 @@ pub fn load_with_world(
                 ))
             }),
             // No thread (resource limits): read on this one.
-            Err(_) => evaluate(name, source, options, world),
+            Err(_) => evaluate(name, source, options, world, skip_unsupported),
         }
     })
 }
@@ -144,6 +177,7 @@ fn evaluate(
     source: &str,
     options: &LoadOptions,
     world: &dyn World,
+    skip_unsupported: bool,
 ) -> Result<Loaded, Diagnostic> {
     let mut ev = eval::Evaluator::new(
         world,
@@ -151,6 +185,7 @@ fn evaluate(
         options.image_width,
         options.image_height,
     );
+    ev.skip_unsupported = skip_unsupported;
     for (name, value) in &options.declares {
         ev.declare_global(name, eval::value::Value::Float(*value));
     }
@@ -158,5 +193,80 @@ fn evaluate(
     Ok(Loaded {
         scene: std::mem::take(&mut ev.scene),
         warnings: std::mem::take(&mut ev.warnings),
+        debug: std::mem::take(&mut ev.debug_output),
     })
+}
+
+/// What `penumbra check` prints for a scene that was read: counts of objects, lights,
+/// the shapes and features used, and warnings.
+pub fn check_summary(loaded: &Loaded) -> String {
+    use std::collections::BTreeMap;
+    use std::fmt::Write;
+
+    fn visit(o: &crate::scene::Object, features: &mut BTreeMap<&'static str, usize>) {
+        let name = match &o.shape {
+            crate::scene::Shape::Sphere { .. } => "sphere",
+            crate::scene::Shape::Plane { .. } => "plane",
+            crate::scene::Shape::Box { .. } => "box",
+            crate::scene::Shape::Cylinder { .. } => "cylinder",
+            crate::scene::Shape::Cone { .. } => "cone",
+            crate::scene::Shape::Disc { .. } => "disc",
+            crate::scene::Shape::Torus { .. } => "torus",
+            crate::scene::Shape::Quadric { .. } => "quadric",
+            crate::scene::Shape::Triangle { .. } => "triangle",
+            crate::scene::Shape::SmoothTriangle { .. } => "smooth_triangle",
+            crate::scene::Shape::Mesh(_) => "mesh",
+            crate::scene::Shape::Polygon { .. } => "polygon",
+            crate::scene::Shape::Union(_) => "union",
+            crate::scene::Shape::Merge(_) => "merge",
+            crate::scene::Shape::Intersection(_) => "intersection",
+            crate::scene::Shape::Difference(_) => "difference",
+        };
+        *features.entry(name).or_default() += 1;
+        if !o.clipped_by.is_empty() {
+            *features.entry("clipped_by").or_default() += 1;
+        }
+        if o.interior.is_some() {
+            *features.entry("interior").or_default() += 1;
+        }
+        for child in o.shape.children().unwrap_or(&[]) {
+            visit(child, features);
+        }
+        for clip in &o.clipped_by {
+            visit(clip, features);
+        }
+    }
+
+    let scene = &loaded.scene;
+    let mut features = BTreeMap::new();
+    for o in &scene.objects {
+        visit(o, &mut features);
+    }
+    for l in &scene.lights {
+        let kind = match l.kind {
+            crate::scene::LightKind::Point => "point light",
+            crate::scene::LightKind::Spot { .. } => "spotlight",
+            crate::scene::LightKind::Parallel { .. } => "parallel light",
+            crate::scene::LightKind::Cylinder { .. } => "cylinder light",
+        };
+        *features.entry(kind).or_default() += 1;
+        if l.area.is_some() {
+            *features.entry("area_light").or_default() += 1;
+        }
+    }
+    let mut out = format!(
+        "{} objects, {} lights, version {}, {} warnings",
+        scene.objects.len(),
+        scene.lights.len(),
+        scene.version,
+        loaded.warnings.len()
+    );
+    if !features.is_empty() {
+        out.push_str("; uses");
+        for (i, (name, n)) in features.iter().enumerate() {
+            let sep = if i == 0 { " " } else { ", " };
+            let _ = write!(out, "{sep}{name} x{n}");
+        }
+    }
+    out
 }

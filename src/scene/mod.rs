@@ -10,7 +10,7 @@ mod texture;
 
 pub use camera::{Camera, CameraSpec};
 pub use light::{AreaLight, Light, LightKind};
-pub use object::{Object, ObjectFlags, Shape};
+pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
 pub use texture::{Finish, Interior, Pattern, Pigment, PigmentKind, Reflection, Texture};
 
 use glam::DVec3;

@@ -15,6 +15,8 @@ use super::value::{ArrayValue, MacroDef, Value};
 type R<T> = Result<T, Diagnostic>;
 
 /// Elements in one array, so a typo in a size cannot exhaust memory.
+/// `#debug` text kept; more is dropped.
+const MAX_DEBUG_BYTES: usize = 1 << 20;
 const MAX_ARRAY_ELEMENTS: usize = 1_000_000;
 
 impl Evaluator<'_> {
@@ -105,7 +107,13 @@ impl Evaluator<'_> {
                         self.warn(span, text.trim_end().to_string());
                         Ok(())
                     }
-                    _ => Ok(()),
+                    _ => {
+                        // A loop printing forever must not fill memory.
+                        if self.debug_output.len() < MAX_DEBUG_BYTES {
+                            self.debug_output.push_str(&text);
+                        }
+                        Ok(())
+                    }
                 }
             }
             "undef" => {
@@ -119,7 +127,13 @@ impl Evaluator<'_> {
                 Ok(())
             }
             "default" => self.default_directive(),
-            "fopen" | "fclose" | "read" | "write" | "render" | "statistics" => {
+            "fopen" | "fclose" | "read" | "write" => Err(self.err(
+                span,
+                format!(
+                    "unsupported: `#{name}` is refused: a scene may not open, read or write files"
+                ),
+            )),
+            "render" | "statistics" => {
                 Err(self.err(span, format!("unsupported: `#{name}` is not supported yet")))
             }
             other => Err(self.err(span, format!("unknown directive `#{other}`"))),
@@ -375,7 +389,7 @@ impl Evaluator<'_> {
     }
 
     /// `#default { texture/pigment/finish {...} }`: the texture new textures start from.
-    fn default_directive(&mut self) -> R<()> {
+    pub(super) fn default_directive(&mut self) -> R<()> {
         let open = self.expect(Punct::LBrace, "after `#default`")?;
         loop {
             let tok = self.peek()?;
@@ -514,7 +528,7 @@ impl Evaluator<'_> {
         }
         let flat = self.flat_index(&a.borrow().dims, &idx, span)?;
         self.expect(Punct::Eq, "after the array element")?;
-        let value = self.declared_value()?;
+        let value = self.declared_value_tolerant()?;
         self.eat_declare_semicolon();
         if let Some(slot) = a.borrow_mut().items.get_mut(flat) {
             *slot = Some(value);
@@ -724,6 +738,15 @@ impl Evaluator<'_> {
                 format!("expected a file name string, found {}", v.kind_name()),
             ));
         };
+        if escapes_folder(&name) {
+            return Err(self.err(
+                s,
+                format!(
+                    "refused: the include file \"{name}\" is outside the allowed folders \
+                     (the scene's folder, --include-path folders, POV-Ray's include folder)"
+                ),
+            ));
+        }
         let Some(path) = self.resolve_include(&name) else {
             return Err(self.err(s, format!("cannot find the include file \"{name}\"")));
         };
@@ -739,7 +762,11 @@ impl Evaluator<'_> {
     }
 
     /// The including file's folder, then each include path, then POV-Ray's own includes.
+    /// Names that could leave those folders find nothing (see [`escapes_folder`]).
     pub(super) fn resolve_include(&self, name: &str) -> Option<PathBuf> {
+        if escapes_folder(name) {
+            return None;
+        }
         let mut dirs = Vec::new();
         if let Some(file) = self.current_file().and_then(|f| self.files.name(f)) {
             dirs.push(
@@ -755,4 +782,25 @@ impl Evaluator<'_> {
             .map(|d| d.join(name))
             .find(|p| self.world.exists(p))
     }
+}
+
+/// Whether an include name could reach outside the folder it is looked up in: absolute
+/// paths, and `..` that climbs above the start. Scenes must not read arbitrary files.
+fn escapes_folder(name: &str) -> bool {
+    let path = std::path::Path::new(name);
+    let mut depth = 0i64;
+    for c in path.components() {
+        match c {
+            std::path::Component::Normal(_) => depth += 1,
+            std::path::Component::CurDir => {}
+            std::path::Component::ParentDir => {
+                depth -= 1;
+                if depth < 0 {
+                    return true;
+                }
+            }
+            std::path::Component::RootDir | std::path::Component::Prefix(_) => return true,
+        }
+    }
+    false
 }

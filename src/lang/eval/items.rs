@@ -39,6 +39,11 @@ impl Evaluator<'_> {
                 self.block_end(open, "the background")?;
             }
             "global_settings" => self.global_settings()?,
+            // POV-Ray still reads the old form of `#default` without the `#`.
+            "default" => {
+                self.next()?;
+                self.default_directive()?;
+            }
             "light_source" => {
                 let light = self.light_source()?;
                 self.scene.lights.push(light);
@@ -47,7 +52,16 @@ impl Evaluator<'_> {
                 let o = self.object()?;
                 self.add_object(o);
             }
-            _ if UNSUPPORTED_ITEMS.contains(&word) => return Err(self.unsupported(&tok, word)),
+            _ if UNSUPPORTED_ITEMS.contains(&word) => {
+                let word = word.to_string();
+                self.unsupported_or_skip(&tok, &word)?;
+            }
+            _ if super::objects::is_known_unsupported_shape(word)
+                && self.lookup(word).is_none() =>
+            {
+                let word = word.to_string();
+                self.unsupported_or_skip(&tok, &word)?;
+            }
             _ => {
                 if let Some(v) = self.lookup(word) {
                     let hint = match v {
@@ -121,6 +135,12 @@ impl Evaluator<'_> {
             "interior" => {
                 self.next()?;
                 Value::Interior(self.interior_body(crate::scene::Interior::default())?)
+            }
+            "material" => {
+                self.next()?;
+                let mut holder = crate::scene::Object::new(crate::scene::Shape::Union(Vec::new()));
+                self.material_body(&mut holder)?;
+                Value::Material(Box::new((holder.texture, holder.interior)))
             }
             "transform" => {
                 self.next()?;
@@ -237,7 +257,8 @@ impl Evaluator<'_> {
                 }
                 "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
                 | "spherical" | "cylinder" | "mesh_camera" | "normal" => {
-                    return Err(self.unsupported(&tok, word));
+                    let word = word.to_string();
+                    self.unsupported_or_skip(&tok, &word)?;
                 }
                 _ => {
                     if let Some(Value::Camera(c)) = self.lookup(word).cloned() {
@@ -412,7 +433,7 @@ impl Evaluator<'_> {
                     }
                 }
                 "projected_through" | "photons" => {
-                    return Err(self.unsupported(&tok, &word));
+                    self.unsupported_or_skip(&tok, &word)?;
                 }
                 _ => {
                     if let Some(t) = self.transform_modifier()? {
@@ -512,6 +533,16 @@ impl Evaluator<'_> {
                 }
                 "irid_wavelength" => {
                     self.colour()?;
+                }
+                _ if self.skip_unsupported
+                    && super::keywords::is_keyword(&word)
+                    && self.lookup(&word).is_none() =>
+                {
+                    self.warn(
+                        tok.span,
+                        format!("unsupported: `{word}` is not supported yet; it is left out"),
+                    );
+                    self.skip_feature_body()?;
                 }
                 _ => return Err(self.stray_in_block(&tok, "global_settings")),
             }

@@ -523,7 +523,9 @@ pub fn is_colour_keyword(name: &str) -> bool {
 pub fn is_function(name: &str) -> bool {
     matches!(
         name,
-        "sin"
+        "dimension_size"
+            | "dimensions"
+            | "sin"
             | "cos"
             | "tan"
             | "asin"
@@ -589,7 +591,6 @@ pub fn is_known_unsupported_function(name: &str) -> bool {
             | "min_extent"
             | "max_extent"
             | "vturbulence"
-            | "dimension_size"
             | "prod"
             | "sum"
             | "function"

@@ -35,6 +35,8 @@ use value::Value;
 /// Deeper nesting than this (blocks, parentheses, macro calls, includes) is reported rather
 /// than risking the stack.
 pub const MAX_DEPTH: usize = 256;
+/// Shapes and mesh triangles in a scene: beyond this a scene would exhaust memory first.
+pub const MAX_OBJECTS: u64 = 20_000_000;
 /// Total loop iterations in a scene, so an endless `#while` ends with an error.
 #[cfg(not(test))]
 pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
@@ -60,6 +62,12 @@ pub struct Evaluator<'w> {
     in_vector: bool,
     /// What new textures start from; `#default` changes it.
     default_texture: crate::scene::Texture,
+    /// `--skip-unsupported`: unsupported features become warnings and are left out.
+    pub skip_unsupported: bool,
+    /// What `#debug` printed, in order.
+    pub debug_output: String,
+    /// Shapes (and mesh triangles) made so far, against [`MAX_OBJECTS`].
+    object_count: u64,
 }
 
 impl<'w> Evaluator<'w> {
@@ -85,6 +93,9 @@ impl<'w> Evaluator<'w> {
             rng_states: Vec::new(),
             in_vector: false,
             default_texture: crate::scene::Texture::default(),
+            skip_unsupported: false,
+            debug_output: String::new(),
+            object_count: 0,
         }
     }
 
@@ -195,6 +206,77 @@ impl<'w> Evaluator<'w> {
             d = d.with_hint(format!("did you mean `{best}`?"));
         }
         d
+    }
+
+    /// Counts shapes made, so a loop cannot fill memory with objects unnoticed.
+    fn count_objects(&mut self, n: u64, span: Span) -> Result<(), Diagnostic> {
+        self.object_count = self.object_count.saturating_add(n);
+        if self.object_count > MAX_OBJECTS {
+            return Err(self.err(span, format!("too many objects (more than {MAX_OBJECTS})")));
+        }
+        Ok(())
+    }
+
+    /// An unsupported feature at `tok`: an error, or with `--skip-unsupported` a warning,
+    /// and the feature (the keyword, then its `{ ... }` block or its value) is skipped.
+    fn unsupported_or_skip(&mut self, tok: &Token, name: &str) -> Result<(), Diagnostic> {
+        if !self.skip_unsupported {
+            return Err(self.unsupported(tok, name));
+        }
+        self.warn(
+            tok.span,
+            format!("unsupported: `{name}` is not supported yet; it is left out"),
+        );
+        self.next()?;
+        self.skip_feature_body()
+    }
+
+    /// Skips to the `}` that closes the block being read, and past it.
+    /// Reads tokens as written (no directives, no macros, no identifier checks): the block
+    /// is being dropped, and an identifier in it may itself be an unsupported value.
+    fn skip_rest_of_block(&mut self) -> Result<(), Diagnostic> {
+        let mut depth = 1usize;
+        while depth > 0 {
+            let t = if self.raw_peek(0).is_some() {
+                self.raw_next()
+            } else {
+                self.next()?
+            };
+            match &t.kind {
+                TokenKind::Eof => return Err(self.expected("`}`", &t)),
+                TokenKind::Punct(Punct::LBrace) => depth += 1,
+                TokenKind::Punct(Punct::RBrace) => depth -= 1,
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    /// After an unsupported keyword: a balanced `{ ... }` block, or an expression value.
+    fn skip_feature_body(&mut self) -> Result<(), Diagnostic> {
+        let tok = self.peek()?;
+        if tok.is_punct(Punct::LBrace) {
+            self.next()?;
+            return self.skip_rest_of_block();
+        }
+        let starts_value = match &tok.kind {
+            TokenKind::Number(_) | TokenKind::Str(_) => true,
+            TokenKind::Punct(p) => matches!(p, Punct::Lt | Punct::Minus | Punct::LParen),
+            TokenKind::Ident(w) => {
+                self.lookup(w).is_some()
+                    || keywords::is_function(w)
+                    || keywords::is_colour_keyword(w)
+                    || matches!(
+                        &**w,
+                        "x" | "y" | "z" | "pi" | "on" | "off" | "true" | "false"
+                    )
+            }
+            _ => false,
+        };
+        if starts_value {
+            self.expr()?;
+        }
+        Ok(())
     }
 
     fn unsupported(&self, tok: &Token, name: &str) -> Diagnostic {

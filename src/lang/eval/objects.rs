@@ -13,21 +13,33 @@ use crate::scene::{Interior, Object, Shape, Transform};
 type R<T> = Result<T, Diagnostic>;
 
 pub fn is_object_keyword(word: &str) -> bool {
-    matches!(word, "sphere" | "plane" | "box" | "union" | "object")
+    matches!(
+        word,
+        "sphere"
+            | "plane"
+            | "box"
+            | "union"
+            | "object"
+            | "cylinder"
+            | "cone"
+            | "disc"
+            | "torus"
+            | "quadric"
+            | "triangle"
+            | "smooth_triangle"
+            | "mesh"
+            | "polygon"
+            | "merge"
+            | "intersection"
+            | "difference"
+    )
 }
 
 /// Shapes and CSG kinds POV-Ray has that the scene model does not (yet).
 pub fn is_known_unsupported_shape(word: &str) -> bool {
     matches!(
         word,
-        "cylinder"
-            | "cone"
-            | "torus"
-            | "intersection"
-            | "difference"
-            | "merge"
-            | "blob"
-            | "mesh"
+        "blob"
             | "mesh2"
             | "lathe"
             | "sor"
@@ -39,11 +51,6 @@ pub fn is_known_unsupported_shape(word: &str) -> bool {
             | "superellipsoid"
             | "julia_fractal"
             | "bicubic_patch"
-            | "disc"
-            | "polygon"
-            | "triangle"
-            | "smooth_triangle"
-            | "quadric"
             | "cubic"
             | "quartic"
             | "poly"
@@ -61,6 +68,9 @@ impl Evaluator<'_> {
         let word = kw.ident().unwrap_or("").to_string();
         let open = self.block_start(&word)?;
         let what = format!("the {word}");
+        self.count_objects(1, kw.span)?;
+        // A shape POV-Ray drops with a warning still has its modifiers read.
+        let mut dropped = false;
         let mut o = match word.as_str() {
             "sphere" => {
                 let center = self.vector3()?;
@@ -90,15 +100,149 @@ impl Evaluator<'_> {
                 let corner2 = self.vector3()?;
                 shape(Shape::Box { corner1, corner2 })
             }
-            "union" => self.union_children(&what)?,
+            "union" => self.csg_children(&what, Shape::Union)?,
+            "merge" => self.csg_children(&what, Shape::Merge)?,
+            "intersection" => self.csg_children(&what, Shape::Intersection)?,
+            "difference" => self.csg_children(&what, Shape::Difference)?,
+            "cylinder" => {
+                let base = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let cap = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let radius = self.float()?;
+                if (cap - base).length() < 1e-9 {
+                    return Err(self.err(
+                        kw.span,
+                        "degenerate cylinder: the base point equals the cap point",
+                    ));
+                }
+                shape(Shape::Cylinder {
+                    base,
+                    cap,
+                    radius,
+                    open: false,
+                })
+            }
+            "cone" => {
+                let base = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let base_radius = self.float()?;
+                self.eat(Punct::Comma)?;
+                let cap = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let cap_radius = self.float()?;
+                if (cap - base).length() < 1e-9 {
+                    return Err(self.err(
+                        kw.span,
+                        "degenerate cone: the base point equals the cap point",
+                    ));
+                }
+                shape(Shape::Cone {
+                    base,
+                    base_radius,
+                    cap,
+                    cap_radius,
+                    open: false,
+                })
+            }
+            "disc" => {
+                let center = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let (v, s) = self.expr()?;
+                let normal = self.to_vec3(&v, s)?;
+                self.eat(Punct::Comma)?;
+                let radius = self.float()?;
+                let hole_radius = if self.eat(Punct::Comma)? {
+                    self.float()?
+                } else {
+                    0.0
+                };
+                let len = normal.length();
+                if len < 1e-12 || !len.is_finite() {
+                    // POV-Ray accepts it and shows nothing; say so and leave it out.
+                    self.warn(s, "the disc's normal has zero length; the disc is left out");
+                    dropped = true;
+                    shape(Shape::Union(Vec::new()))
+                } else {
+                    shape(Shape::Disc {
+                        center,
+                        normal: normal / len,
+                        radius,
+                        hole_radius,
+                    })
+                }
+            }
+            "torus" => {
+                let major = self.float()?;
+                self.eat(Punct::Comma)?;
+                let minor = self.float()?;
+                shape(Shape::Torus { major, minor })
+            }
+            "quadric" => {
+                let abc = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let def = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let ghi = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let j = self.float()?;
+                shape(Shape::Quadric {
+                    coefficients: [
+                        abc.x, abc.y, abc.z, def.x, def.y, def.z, ghi.x, ghi.y, ghi.z, j,
+                    ],
+                })
+            }
+            "triangle" | "smooth_triangle" => {
+                let (tri, degenerate) = self.triangle_items(word == "smooth_triangle")?;
+                if degenerate {
+                    // As POV-Ray: a warning, and the triangle is dropped.
+                    self.warn(kw.span, "degenerate triangle; it is left out");
+                    dropped = true;
+                    shape(Shape::Union(Vec::new()))
+                } else {
+                    shape(match tri.normals {
+                        Some(normals) => Shape::SmoothTriangle {
+                            corners: tri.corners,
+                            normals,
+                        },
+                        None => Shape::Triangle {
+                            corners: tri.corners,
+                        },
+                    })
+                }
+            }
+            "mesh" => self.mesh_items(&kw)?,
+            "polygon" => self.polygon_items(&kw)?,
             _ => {
                 // `object { Name ... }`
+                if self.skip_unsupported
+                    && let Some(raw) = self.raw_peek(0).cloned()
+                    && let Some(Value::Unsupported(d)) = raw.ident().and_then(|n| self.lookup(n))
+                {
+                    // Leave the whole object out: the rest of its block, its brace.
+                    let message = format!("{}; the object is left out", d.message);
+                    self.warn(raw.span, message);
+                    self.skip_rest_of_block()?;
+                    self.leave();
+                    return Ok(ObjectValue::default());
+                }
                 let tok = self.peek()?;
                 match tok.ident().and_then(|n| self.lookup(n)).cloned() {
                     Some(Value::Object(o)) => {
                         self.next()?;
                         *o
                     }
+                    // `object { Shapes[i] }`
+                    Some(Value::Array(_)) => match self.expr()? {
+                        (Value::Object(o), _) => *o,
+                        (Value::Unsupported(d), s) => return Err(self.err(s, d.message.clone())),
+                        (other, s) => {
+                            return Err(self.err(
+                                s,
+                                format!("expected an object, found {}", other.kind_name()),
+                            ));
+                        }
+                    },
                     Some(other) => {
                         return Err(self.err(
                             tok.span,
@@ -122,12 +266,21 @@ impl Evaluator<'_> {
         };
         self.modifiers(&mut o, &what)?;
         self.block_end(open, &what)?;
+        let empty_csg = o.lights.is_empty()
+            && o.object
+                .as_ref()
+                .is_some_and(|x| x.shape.children().is_some_and(|c| c.is_empty()));
+        if dropped || empty_csg {
+            return Ok(ObjectValue::default());
+        }
         Ok(o)
     }
 
-    /// Children of a `union`; lights inside it are kept beside the shape so later
+    /// Children of a CSG block; lights inside it are kept beside the shape so later
     /// transforms move them too. Children without a texture keep `None` (they inherit).
-    fn union_children(&mut self, what: &str) -> R<ObjectValue> {
+    fn csg_children(&mut self, what: &str, make: fn(Vec<Object>) -> Shape) -> R<ObjectValue> {
+        let first = self.peek()?.span;
+        let mut skipped = false;
         let mut children = Vec::new();
         let mut lights = Vec::new();
         loop {
@@ -135,22 +288,28 @@ impl Evaluator<'_> {
             let Some(word) = tok.ident() else { break };
             if is_object_keyword(word) {
                 let child = self.object()?;
+                skipped |= child.object.is_none() && child.lights.is_empty();
                 children.extend(child.object);
                 lights.extend(child.lights);
             } else if word == "light_source" {
                 lights.push(self.light_source()?);
             } else if is_known_unsupported_shape(word) && self.lookup(word).is_none() {
-                return Err(self.unsupported(&tok, word));
+                let word = word.to_string();
+                self.unsupported_or_skip(&tok, &word)?;
+                skipped = true;
             } else {
                 break;
             }
         }
-        if children.is_empty() && lights.is_empty() {
-            let tok = self.peek()?;
-            return Err(self.expected(&format!("objects inside {what}"), &tok));
+        // POV-Ray accepts an empty CSG block (a loop that made nothing, say) silently; it
+        // is left out of the scene after its modifiers are read.
+        let _ = skipped;
+        let shape = make(children);
+        if !matches!(shape, Shape::Union(_)) && shape.children().is_some_and(|c| c.len() < 2) {
+            self.warn(first, format!("{what} should have at least 2 objects"));
         }
         Ok(ObjectValue {
-            object: Some(Object::new(Shape::Union(children))),
+            object: Some(Object::new(shape)),
             lights,
         })
     }
@@ -158,6 +317,8 @@ impl Evaluator<'_> {
     /// Transforms, textures and flags, until the closing brace.
     fn modifiers(&mut self, o: &mut ObjectValue, what: &str) -> R<()> {
         let mut textures = 0;
+        let mut bounds: Vec<Object> = Vec::new();
+        let mut clipped: Vec<Object> = Vec::new();
         loop {
             let tok = self.peek()?;
             if tok.is_punct(punct_close()) {
@@ -220,9 +381,41 @@ impl Evaluator<'_> {
                     self.next()?;
                     object.flags.inverse = !object.flags.inverse;
                 }
-                "normal" | "bounded_by" | "clipped_by" | "photons" | "radiosity" | "material"
-                | "interior_texture" | "sturm" | "open" | "split_union" | "cutaway_textures"
-                | "no_radiosity" => return Err(self.unsupported(&tok, &word)),
+                "open" => {
+                    self.next()?;
+                    match &mut object.shape {
+                        Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
+                        _ => self.warn(tok.span, "`open` only applies to cylinders and cones"),
+                    }
+                }
+                // Root solving is exact enough in penumbra without it.
+                "sturm" => {
+                    self.next()?;
+                    self.optional_bool()?;
+                }
+                "clipped_by" => {
+                    self.next()?;
+                    let clips = self.object_list("clipped_by", "bounded_by", &bounds)?;
+                    object.clipped_by.extend(clips.iter().cloned());
+                    clipped = clips;
+                }
+                // Bounds only speed POV-Ray up; penumbra builds its own, so they are read and
+                // kept only for `clipped_by { bounded_by }`.
+                "bounded_by" => {
+                    self.next()?;
+                    bounds = self.object_list("bounded_by", "clipped_by", &clipped)?;
+                }
+                "material" => {
+                    self.next()?;
+                    self.material_body(object)?;
+                }
+                "split_union" | "cutaway_textures" => {
+                    self.next()?;
+                    self.optional_bool()?;
+                }
+                "normal" | "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
+                    self.unsupported_or_skip(&tok, &word)?
+                }
                 _ => return Err(self.stray_in_block(&tok, what)),
             }
         }
@@ -376,7 +569,7 @@ impl Evaluator<'_> {
                         | "caustics" | "dispersion" | "dispersion_samples" | "media"),
                     ) => {
                         let w = w.to_string();
-                        return Err(self.unsupported(&tok, &w));
+                        self.unsupported_or_skip(&tok, &w)?;
                     }
                     _ => return Err(self.stray_in_block(&tok, "the interior")),
                 }
@@ -386,6 +579,220 @@ impl Evaluator<'_> {
         let i = r?;
         self.expect(Punct::RBrace, "to close the interior")?;
         Ok(i)
+    }
+}
+
+/// Corners (and normals) of one triangle as written.
+pub(super) struct TriangleItems {
+    corners: [DVec3; 3],
+    normals: Option<[DVec3; 3]>,
+}
+
+/// Collinear or coincident corners: POV-Ray drops such triangles.
+fn degenerate_triangle(c: &[DVec3; 3]) -> bool {
+    let e1 = c[1] - c[0];
+    let e2 = c[2] - c[0];
+    let n = e1.cross(e2).length();
+    !(n.is_finite() && n > 1e-12 * e1.length() * e2.length() && n > 0.0)
+}
+
+impl Evaluator<'_> {
+    /// The corners of a `triangle` (or corners and normals of a `smooth_triangle`), after
+    /// the opening brace; whether they are degenerate.
+    fn triangle_items(&mut self, smooth: bool) -> R<(TriangleItems, bool)> {
+        let mut corners = [DVec3::ZERO; 3];
+        let mut normals = [DVec3::ZERO; 3];
+        for i in 0..3 {
+            if i > 0 {
+                self.eat(Punct::Comma)?;
+            }
+            corners[i] = self.vector3()?;
+            if smooth {
+                self.eat(Punct::Comma)?;
+                normals[i] = self.vector3()?;
+            }
+        }
+        let degenerate = degenerate_triangle(&corners);
+        Ok((
+            TriangleItems {
+                corners,
+                normals: smooth.then_some(normals),
+            },
+            degenerate,
+        ))
+    }
+
+    /// `mesh { triangle {...} smooth_triangle {...} ... [inside_vector v] [hierarchy b] }`
+    /// up to the object modifiers. Degenerate triangles are dropped silently, as POV-Ray does.
+    fn mesh_items(&mut self, kw: &Token) -> R<ObjectValue> {
+        let mut mesh = crate::scene::Mesh::default();
+        loop {
+            let tok = self.peek()?;
+            match tok.ident() {
+                Some(w @ ("triangle" | "smooth_triangle")) => {
+                    let smooth = w == "smooth_triangle";
+                    let open = self.block_start(w)?;
+                    let (tri, degenerate) = self.triangle_items(smooth)?;
+                    loop {
+                        let t = self.peek()?;
+                        if t.is_punct(Punct::RBrace) {
+                            break;
+                        }
+                        if t.is_ident("texture") {
+                            self.unsupported_or_skip(&t, "per-triangle textures in a mesh")?;
+                            continue;
+                        }
+                        return Err(self.stray_in_block(&t, "the mesh triangle"));
+                    }
+                    self.block_end(open, "the mesh triangle")?;
+                    self.count_objects(1, tok.span)?;
+                    if !degenerate {
+                        mesh.triangles.push(crate::scene::MeshTriangle {
+                            corners: tri.corners,
+                            normals: tri.normals,
+                        });
+                    }
+                }
+                Some("inside_vector") => {
+                    self.next()?;
+                    let (v, s) = self.expr()?;
+                    let v = self.to_vec3(&v, s)?;
+                    if v.length() < 1e-12 {
+                        return Err(self.err(s, "the inside_vector has zero length"));
+                    }
+                    mesh.inside_vector = Some(v);
+                }
+                Some("hierarchy") => {
+                    self.next()?;
+                    self.optional_bool()?;
+                }
+                _ => break,
+            }
+        }
+        if mesh.triangles.is_empty() {
+            return Err(self.err(kw.span, "this mesh has no (non-degenerate) triangles"));
+        }
+        Ok(shape(Shape::Mesh(mesh)))
+    }
+
+    /// `polygon { n, p1, ..., pn }`: 2-D points lie in z = 0. A last sub-polygon that does
+    /// not return to its first point is closed, with a warning, as in POV-Ray.
+    fn polygon_items(&mut self, kw: &Token) -> R<ObjectValue> {
+        let (v, s) = self.expr()?;
+        let n = self.to_float(&v, s)?;
+        if !(3.0..=1e7).contains(&n) {
+            return Err(self.err(
+                s,
+                format!("a polygon needs at least three points, found {n}"),
+            ));
+        }
+        let n = n as usize;
+        self.count_objects(n as u64 / 16, s)?;
+        let mut points = Vec::with_capacity(n.min(1 << 16));
+        let mut first = 0;
+        for i in 0..n {
+            self.eat(Punct::Comma)?;
+            let p = self.vector3()?;
+            points.push(p);
+            if i > first && p == points[first] {
+                first = i + 1;
+            }
+        }
+        if first < points.len() {
+            self.warn(kw.span, "the polygon is not closed; closing it");
+            let p = points[first];
+            points.push(p);
+        }
+        Ok(shape(Shape::Polygon { points }))
+    }
+
+    /// `{ objects }` after `clipped_by` or `bounded_by`; `{ other }` (the other keyword
+    /// alone) means the objects given to the other one.
+    fn object_list(&mut self, what: &str, other: &str, others: &[Object]) -> R<Vec<Object>> {
+        let open = self.expect(Punct::LBrace, &format!("after `{what}`"))?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<Object>> {
+            let mut out = Vec::new();
+            loop {
+                let tok = self.peek()?;
+                if tok.is_punct(Punct::RBrace) {
+                    return Ok(out);
+                }
+                if tok.is_ident(other) {
+                    self.next()?;
+                    out.extend(others.iter().cloned());
+                    continue;
+                }
+                match tok.ident() {
+                    Some(w) if is_object_keyword(w) => {
+                        let o = self.object()?;
+                        out.extend(o.object);
+                    }
+                    Some(w) if is_known_unsupported_shape(w) && self.lookup(w).is_none() => {
+                        let w = w.to_string();
+                        self.unsupported_or_skip(&tok, &w)?;
+                    }
+                    _ => return Err(self.stray_in_block(&tok, &format!("`{what}`"))),
+                }
+            }
+        })();
+        self.leave();
+        let out = r?;
+        self.expect(Punct::RBrace, &format!("to close `{what}`"))?;
+        Ok(out)
+    }
+
+    /// `material { [Name] texture {...} interior {...} transforms }`.
+    pub(super) fn material_body(&mut self, object: &mut Object) -> R<()> {
+        let open = self.expect(Punct::LBrace, "after `material`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<()> {
+            loop {
+                let tok = self.peek()?;
+                if tok.is_punct(Punct::RBrace) {
+                    return Ok(());
+                }
+                match tok.ident() {
+                    Some("texture") => {
+                        self.next()?;
+                        object.texture = Some(self.texture_body(self.default_texture.clone())?);
+                    }
+                    Some("interior") => {
+                        self.next()?;
+                        let base = object.interior.unwrap_or_default();
+                        object.interior = Some(self.interior_body(base)?);
+                    }
+                    Some(n)
+                        if matches!(self.lookup(n), Some(Value::Material(_) | Value::Array(_))) =>
+                    {
+                        // A material identifier, or an element of an array of them.
+                        let (v, s) = self.expr()?;
+                        let Value::Material(m) = v else {
+                            return Err(self
+                                .err(s, format!("expected a material, found {}", v.kind_name())));
+                        };
+                        if m.0.is_some() {
+                            object.texture = m.0;
+                        }
+                        if m.1.is_some() {
+                            object.interior = m.1;
+                        }
+                    }
+                    _ => match self.transform_modifier()? {
+                        Some(t) => {
+                            if let Some(texture) = &mut object.texture {
+                                texture.transform_by(&t);
+                            }
+                        }
+                        None => return Err(self.stray_in_block(&tok, "the material")),
+                    },
+                }
+            }
+        })();
+        self.leave();
+        r?;
+        self.expect(Punct::RBrace, "to close the material")?;
+        Ok(())
     }
 }
 

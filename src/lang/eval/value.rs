@@ -34,7 +34,7 @@ impl Vector {
 
 /// An object as the evaluator carries it: light sources may sit inside CSG and must move
 /// with it, so they travel beside the shape until the object reaches the scene.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Default)]
 pub struct ObjectValue {
     pub object: Option<Object>,
     pub lights: Vec<Light>,
@@ -91,6 +91,8 @@ pub enum Value {
     Finish(Box<Finish>),
     Texture(Box<Texture>),
     Interior(Interior),
+    /// A `material`: the texture and interior it sets, if any.
+    Material(Box<(Option<Texture>, Option<Interior>)>),
     Transform(Box<Transform>),
     Macro(Rc<MacroDef>),
     Array(Rc<std::cell::RefCell<ArrayValue>>),
@@ -118,6 +120,7 @@ impl Value {
             Value::Finish(_) => "a finish",
             Value::Texture(_) => "a texture",
             Value::Interior(_) => "an interior",
+            Value::Material(_) => "a material",
             Value::Transform(_) => "a transform",
             Value::Macro(_) => "a macro",
             Value::Array(_) => "an array",
