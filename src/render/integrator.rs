@@ -155,7 +155,14 @@ impl<'a> Integrator<'a> {
             skip: flags::NO_IMAGE,
             media: Media::OUTSIDE,
         };
-        self.trace(ray, path, sampler, counts)
+        let l = self.trace(ray, path, sampler, counts);
+        if self.scene.legacy_gamma {
+            // Per sample, as POV-Ray decodes each traced ray; where the estimate is noisy
+            // (area lights) the curve's bend adds a small bias (docs/differences.md).
+            l.map(|c| crate::output::srgb::decode(c.max(0.0)))
+        } else {
+            l
+        }
     }
 
     fn dimension(&self, level: u32, slot: u32) -> u32 {
@@ -449,25 +456,44 @@ impl<'a> Integrator<'a> {
                 continue;
             }
             if !light.shadowless {
-                let (target_dir, target_dist) = match &light.area {
+                let shadow_to = |target: DVec3, counts: &mut RayCounts| {
+                    let to = target - origin;
+                    let dist = to.length();
+                    counts.shadow += 1;
+                    self.shadow_filter(&Ray::new(origin, to / dist), dist * (1.0 - 1e-9))
+                };
+                let filter = match &light.area {
                     Some(area) => {
                         sampler.set_dimension(self.dimension(level, DIMS_PER_LIGHT * index as u32));
-                        let target = area.sample_point(
-                            light.location,
-                            sampler.get_2d(),
-                            light.location - p,
-                            self.area_lights,
-                            false,
-                        );
-                        let to = target - origin;
-                        let dist = to.length();
-                        (to / dist, dist)
+                        let s = sampler.get_2d();
+                        if area.adaptive.is_some() && self.area_lights == AreaLightMode::Pov {
+                            // POV-Ray's adaptive rule depends on what the corners see, so it
+                            // is evaluated as POV-Ray does, with jitter drawn from this sample.
+                            let seed = ((s.0 * 4_294_967_296.0) as u64) << 32
+                                | (s.1 * 4_294_967_296.0) as u64;
+                            area.adaptive_filter(
+                                light.location,
+                                light.location - p,
+                                light_colour,
+                                seed,
+                                |t| shadow_to(t, counts),
+                            )
+                        } else {
+                            let target = area.sample_point(
+                                light.location,
+                                s,
+                                light.location - p,
+                                self.area_lights,
+                                false,
+                            );
+                            shadow_to(target, counts)
+                        }
                     }
-                    None => (l, distance),
+                    None => {
+                        counts.shadow += 1;
+                        self.shadow_filter(&Ray::new(origin, l), distance * (1.0 - 1e-9))
+                    }
                 };
-                counts.shadow += 1;
-                let filter =
-                    self.shadow_filter(&Ray::new(origin, target_dir), target_dist * (1.0 - 1e-9));
                 if filter == DVec3::ZERO {
                     continue;
                 }

@@ -27,6 +27,8 @@ pub struct PreparedArea {
     pub jitter: bool,
     pub circular: bool,
     pub orient: bool,
+    /// `adaptive k`: POV-Ray's data-dependent subdivision, reproduced per shaded point.
+    pub adaptive: Option<u32>,
     /// Cumulative grid weights along each axis; the last entry is 1.
     cdf1: Vec<f64>,
     cdf2: Vec<f64>,
@@ -42,6 +44,7 @@ impl PreparedLight {
             jitter: a.jitter,
             circular: a.circular,
             orient: a.orient,
+            adaptive: a.adaptive,
             cdf1: cumulative(&grid_weights(a.size1.max(1))),
             cdf2: cumulative(&grid_weights(a.size2.max(1))),
         });
@@ -167,7 +170,7 @@ impl PreparedArea {
         mode: AreaLightMode,
         uniform: bool,
     ) -> DVec3 {
-        let (mut u, mut v) = match mode {
+        let (u, v) = match mode {
             AreaLightMode::Continuous => {
                 if self.circular {
                     let (x, y) = super::concentric_disc(s1, s2);
@@ -188,8 +191,18 @@ impl PreparedArea {
                 )
             }
         };
-        let (mut a1, mut a2) = (self.axis1, self.axis2);
-        if self.circular && mode == AreaLightMode::Pov {
+        if mode == AreaLightMode::Continuous {
+            // Already inside the disc for circular lights.
+            let d = self.orient_axes(towards);
+            return centre + d.0 * u + d.1 * v;
+        }
+        self.place(centre, u, v, towards)
+    }
+
+    /// The light position for grid coordinates (u, v) in [-1/2, 1/2]: POV-Ray's circular
+    /// mapping and orient.
+    fn place(&self, centre: DVec3, mut u: f64, mut v: f64, towards: DVec3) -> DVec3 {
+        if self.circular {
             u += 0.001;
             v += 0.001;
             let len = (u * u + v * v).sqrt();
@@ -197,19 +210,121 @@ impl PreparedArea {
             u *= s;
             v *= s;
         }
-        if self.orient {
-            let d = towards.normalize_or(DVec3::Z);
-            let z = if (d.z.abs() - 1.0).abs() < 0.01 {
-                DVec3::Y
-            } else {
-                DVec3::Z
-            };
-            let len = a1.length();
-            a1 = d.cross(z).normalize_or(DVec3::X) * len;
-            a2 = d.cross(a1).normalize_or(DVec3::Y) * len;
-        }
+        let (a1, a2) = self.orient_axes(towards);
         centre + a1 * u + a2 * v
     }
+
+    fn orient_axes(&self, towards: DVec3) -> (DVec3, DVec3) {
+        if !self.orient {
+            return (self.axis1, self.axis2);
+        }
+        let d = towards.normalize_or(DVec3::Z);
+        let z = if (d.z.abs() - 1.0).abs() < 0.01 {
+            DVec3::Y
+        } else {
+            DVec3::Z
+        };
+        let len = self.axis1.length();
+        let a1 = d.cross(z).normalize_or(DVec3::X) * len;
+        let a2 = d.cross(a1).normalize_or(DVec3::Y) * len;
+        (a1, a2)
+    }
+}
+
+impl PreparedArea {
+    /// The grid point (i, j), jittered by `jitter` (each component in [0, 1)), with
+    /// circular and orient applied.
+    fn grid_point(
+        &self,
+        centre: DVec3,
+        i: usize,
+        j: usize,
+        jitter: (f64, f64),
+        towards: DVec3,
+    ) -> DVec3 {
+        let u = grid_coordinate(i, self.size1, self.jitter.then_some(jitter.0));
+        let v = grid_coordinate(j, self.size2, self.jitter.then_some(jitter.1));
+        self.place(centre, u, v, towards)
+    }
+
+    /// POV-Ray's adaptive shadow test, reproduced exactly for one shaded point: corners of
+    /// grid rectangles are tested (each grid point once, jittered afresh from `seed`), and a
+    /// rectangle is split while it is above the adaptive level or its neighbouring corners
+    /// disagree by more than 0.1 (sum over channels of the shadowed light colour). Returns
+    /// the shadow filter (visible fraction per channel). `filter_to` traces one shadow ray.
+    pub fn adaptive_filter(
+        &self,
+        centre: DVec3,
+        towards: DVec3,
+        light_colour: DVec3,
+        seed: u64,
+        mut filter_to: impl FnMut(DVec3) -> DVec3,
+    ) -> DVec3 {
+        let (n1, n2) = (self.size1 as usize, self.size2 as usize);
+        let limit = self.adaptive.unwrap_or(100);
+        ADAPTIVE_CACHE.with(|cache| {
+            let mut cache = cache.borrow_mut();
+            cache.clear();
+            cache.resize(n1 * n2, None);
+            let mut get = |i: usize, j: usize| -> DVec3 {
+                if let Some(f) = cache[j * n1 + i] {
+                    return f;
+                }
+                let mut rng = rand_pcg::Pcg32::new(
+                    seed ^ ((j * n1 + i) as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15),
+                    0xda3e_39cb_94b9_5bdb,
+                );
+                let jitter = (unit(&mut rng), unit(&mut rng));
+                let f = filter_to(self.grid_point(centre, i, j, jitter, towards));
+                cache[j * n1 + i] = Some(f);
+                f
+            };
+            fn differ(a: DVec3, b: DVec3, colour: DVec3) -> bool {
+                ((a - b) * colour).abs().element_sum() > 0.1
+            }
+            #[allow(clippy::too_many_arguments)]
+            fn rect(
+                get: &mut dyn FnMut(usize, usize) -> DVec3,
+                (u1, v1, u2, v2): (usize, usize, usize, usize),
+                level: u32,
+                limit: u32,
+                colour: DVec3,
+            ) -> DVec3 {
+                let c00 = get(u1, v1);
+                let c10 = get(u2, v1);
+                let c01 = get(u1, v2);
+                let c11 = get(u2, v2);
+                let spans = u2 - u1 > 1 || v2 - v1 > 1;
+                let split = spans
+                    && (level < limit
+                        || differ(c00, c10, colour)
+                        || differ(c00, c01, colour)
+                        || differ(c10, c11, colour)
+                        || differ(c01, c11, colour));
+                if !split {
+                    return (c00 + c10 + c01 + c11) * 0.25;
+                }
+                let (ua, ub) = ((u1 + u2) / 2, (u1 + u2).div_ceil(2));
+                let (va, vb) = ((v1 + v2) / 2, (v1 + v2).div_ceil(2));
+                (rect(get, (u1, v1, ua, va), level + 1, limit, colour)
+                    + rect(get, (ub, v1, u2, va), level + 1, limit, colour)
+                    + rect(get, (u1, vb, ua, v2), level + 1, limit, colour)
+                    + rect(get, (ub, vb, u2, v2), level + 1, limit, colour))
+                    * 0.25
+            }
+            rect(&mut get, (0, 0, n1 - 1, n2 - 1), 0, limit, light_colour)
+        })
+    }
+}
+
+thread_local! {
+    /// Shadow results per grid point for the adaptive test, reused from point to point.
+    static ADAPTIVE_CACHE: std::cell::RefCell<Vec<Option<DVec3>>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+fn unit(rng: &mut rand_pcg::Pcg32) -> f64 {
+    use rand::Rng;
+    (rng.next_u32() as f64 + 0.5) / 4_294_967_296.0
 }
 
 /// How area lights are sampled (`--area-lights`).

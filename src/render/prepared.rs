@@ -35,6 +35,9 @@ pub struct PreparedScene {
     pub background: Colour,
     pub settings: GlobalSettings,
     pub legacy: bool,
+    /// Pre-3.7 scenes without `assumed_gamma` are computed in display-gamma space; POV-Ray
+    /// 3.7 then writes linear files by decoding each traced value with the sRGB curve.
+    pub legacy_gamma: bool,
     /// Whether any material lets light through: if none does, shadow rays only ask
     /// whether anything is in the way.
     pub any_transmitting: bool,
@@ -66,6 +69,7 @@ impl PreparedScene {
             background: scene.background,
             settings: scene.settings.clone(),
             legacy: scene.legacy(),
+            legacy_gamma: scene.legacy() && scene.settings.assumed_gamma.is_none(),
         }
     }
 }

@@ -1,0 +1,81 @@
+//! POV-Ray's own example scenes about lights, rendered by penumbra and compared with
+//! POV-Ray's converged output (shared/testing-statistics.md). Each scene is read from the
+//! installed povray-examples package; where it cannot pass yet, the reason stands beside it.
+
+use std::path::{Path, PathBuf};
+
+use penumbra::lang::{LoadOptions, load_scene};
+use penumbra::render::RenderOptions;
+use penumbra::study::{self, SQRT_B_THRESHOLD};
+
+const EXAMPLES: &str = "/usr/share/povray-3.7/scenes";
+
+/// (scene, why it cannot pass yet)
+const SCENES: &[(&str, Option<&str>)] = &[
+    ("lights/arealit1.pov", None),
+    ("lights/arealit2.pov", None),
+    ("lights/arealit3.pov", None),
+    ("lights/soft.pov", None),
+    ("lights/fillite.pov", None),
+    ("lights/parallel_lights.pov", None),
+    (
+        "camera/focalblur.pov",
+        Some("uses sky_sphere, which penumbra does not support yet"),
+    ),
+];
+
+fn verdict(scene: &str) -> Option<study::Verdict> {
+    let path = Path::new(EXAMPLES).join(scene);
+    if !path.exists() {
+        println!("{scene}: skipped, the povray-examples package is not installed");
+        return None;
+    }
+    let name = scene.trim_end_matches(".pov").replace('/', "_");
+    let reference = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/references/examples")
+        .join(format!("{name}.exr"));
+    let reference = study::read_reference(&reference).expect("committed reference");
+    let options = LoadOptions {
+        include_paths: vec![path.parent().expect("folder").to_path_buf()],
+        image_width: 160,
+        image_height: 120,
+        ..LoadOptions::default()
+    };
+    let scene_model = match load_scene(&path, &options) {
+        Ok(l) => l.scene,
+        Err(d) => panic!("{d}"),
+    };
+    let images: Vec<_> = (0..4)
+        .map(|k| {
+            let o = RenderOptions {
+                width: 160,
+                height: 120,
+                samples_per_pixel: 64,
+                seed: 100 + k,
+                ..RenderOptions::default()
+            };
+            penumbra::render_scene(&scene_model, &o, &())
+                .expect("renders")
+                .0
+        })
+        .collect();
+    Some(study::evaluate(&images, &reference.full, &reference.half).expect("comparable"))
+}
+
+#[test]
+fn light_examples_converge_to_povray() {
+    let mut failures = Vec::new();
+    for &(scene, reason) in SCENES {
+        if let Some(reason) = reason {
+            println!("{scene}: not tested: {reason}");
+            continue;
+        }
+        if let Some(v) = verdict(scene) {
+            println!("{scene}: {v}");
+            if !v.passes(SQRT_B_THRESHOLD) {
+                failures.push(format!("{scene}: {v}"));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
