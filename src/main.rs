@@ -68,6 +68,12 @@ enum Command {
         /// at random in proportion to its weight.
         #[arg(long, value_enum, default_value = "both")]
         splitting: Split,
+        /// Shadow rays per area light at each shading point.
+        #[arg(long, default_value_t = 1)]
+        light_samples: u32,
+        /// Spend the samples where a pilot pass finds noise (same average per pixel).
+        #[arg(long)]
+        adaptive: bool,
         /// Leave out features penumbra does not support (with a warning) instead of stopping.
         #[arg(long)]
         skip_unsupported: bool,
@@ -236,6 +242,8 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             quiet,
             area_lights,
             splitting,
+            light_samples,
+            adaptive,
             skip_unsupported,
             scene_args,
         } => {
@@ -263,6 +271,8 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                     Split::Both => Splitting::Both,
                     Split::One => Splitting::One,
                 },
+                light_samples,
+                adaptive,
                 ..RenderOptions::default()
             };
             let show = !quiet && std::io::stderr().is_terminal();

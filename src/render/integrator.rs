@@ -19,6 +19,10 @@ use super::lights::AreaLightMode;
 use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
 
+/// Spreads several light samples: point k of n is shifted by (k/n, k * golden ratio mod 1),
+/// a well-spread 2D set for any n.
+const GOLDEN: f64 = 0.618_033_988_749_894_9;
+
 /// Below this path weight, Russian roulette starts.
 const ROULETTE_WEIGHT: f64 = 0.1;
 /// The smallest survival probability, which bounds the variance roulette can add.
@@ -124,6 +128,9 @@ pub struct Integrator<'a> {
     pub roulette: bool,
     pub splitting: Splitting,
     pub area_lights: AreaLightMode,
+    /// Shadow rays per area light per shading point (more where soft shadows dominate the
+    /// noise; each camera sample then costs more).
+    pub light_samples: u32,
     /// Dimensions before the path's own: the pixel position (2) and the lens (2).
     first_path_dimension: u32,
 }
@@ -142,6 +149,7 @@ impl<'a> Integrator<'a> {
             roulette: true,
             splitting: Splitting::default(),
             area_lights: AreaLightMode::Pov,
+            light_samples: 1,
             first_path_dimension: 4,
         }
     }
@@ -479,14 +487,24 @@ impl<'a> Integrator<'a> {
                                 |t| shadow_to(t, counts),
                             )
                         } else {
-                            let target = area.sample_point(
-                                light.location,
-                                s,
-                                light.location - p,
-                                self.area_lights,
-                                false,
-                            );
-                            shadow_to(target, counts)
+                            // Several shadow samples: the stratified sample shifted by a
+                            // well-spread set, so each is uniform and together they cover
+                            // the light.
+                            let n = self.light_samples.max(1);
+                            let mut sum = DVec3::ZERO;
+                            for k in 0..n {
+                                let shift = (k as f64 / n as f64, (k as f64 * GOLDEN).fract());
+                                let sk = ((s.0 + shift.0).fract(), (s.1 + shift.1).fract());
+                                let target = area.sample_point(
+                                    light.location,
+                                    sk,
+                                    light.location - p,
+                                    self.area_lights,
+                                    false,
+                                );
+                                sum += shadow_to(target, counts);
+                            }
+                            sum / n as f64
                         }
                     }
                     None => {

@@ -39,6 +39,10 @@ pub struct RenderOptions {
     pub roulette: bool,
     pub area_lights: AreaLightMode,
     pub splitting: Splitting,
+    /// Shadow rays per area light per shading point.
+    pub light_samples: u32,
+    /// Spend the samples where a pilot pass finds the most noise (same average count).
+    pub adaptive: bool,
     /// Stratified jittered samples (the default); false draws independent uniform samples,
     /// for convergence studies that need the N^-1/2 baseline.
     pub stratified: bool,
@@ -56,6 +60,8 @@ impl Default for RenderOptions {
             roulette: true,
             area_lights: AreaLightMode::Pov,
             splitting: Splitting::Both,
+            light_samples: 1,
+            adaptive: false,
             stratified: true,
         }
     }
@@ -138,6 +144,8 @@ pub(crate) fn concentric_disc(u: f64, v: f64) -> (f64, f64) {
 
 /// Renders into a film. Each pixel's samples are taken in index order by one thread, and
 /// tiles are written back in a fixed order, so the result is the same for any thread count.
+/// With `adaptive`, a pilot pass (discarded, so the estimate stays unbiased) measures each
+/// pixel's noise, and the sample budget is shared out in proportion to it.
 pub fn render(
     scene: &PreparedScene,
     options: &RenderOptions,
@@ -156,6 +164,131 @@ pub fn render(
             range.start, range.end
         )));
     }
+    let pool = match options.threads {
+        Some(n) => Some(
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(n.max(1))
+                .build()
+                .map_err(|e| RenderError(format!("cannot start {n} threads: {e}")))?,
+        ),
+        None => None,
+    };
+    let run = |plan: &SamplePlan, progress: &dyn Progress| match &pool {
+        Some(pool) => pool.install(|| render_pass(scene, options, plan, progress)),
+        None => render_pass(scene, options, plan, progress),
+    };
+    let (film, rays, samples) = if options.adaptive {
+        if options.sample_range.is_some() {
+            return Err(RenderError(
+                "adaptive sampling cannot be split into sample ranges".into(),
+            ));
+        }
+        let pilot = SamplePlan::Uniform {
+            spp: ADAPTIVE_PILOT,
+            range: 0..ADAPTIVE_PILOT,
+            seed: options.seed ^ 0xad47_1be5_5eed_0001,
+        };
+        let (pilot_film, pilot_sq, pilot_rays) = run(&pilot, &());
+        let counts = allocate(&pilot_film, &pilot_sq, spp);
+        let samples: u64 = counts.iter().map(|&n| n as u64).sum();
+        let plan = SamplePlan::PerPixel {
+            counts,
+            seed: options.seed,
+        };
+        let (film, _, mut rays) = run(&plan, progress);
+        rays.add(&pilot_rays);
+        (film, rays, samples + (w * h) as u64 * ADAPTIVE_PILOT as u64)
+    } else {
+        let plan = SamplePlan::Uniform {
+            spp,
+            range: range.clone(),
+            seed: options.seed,
+        };
+        let (film, _, rays) = run(&plan, progress);
+        (
+            film,
+            rays,
+            (w * h) as u64 * (range.end - range.start) as u64,
+        )
+    };
+    let stats = RenderStats {
+        wall: start.elapsed(),
+        samples,
+        rays,
+    };
+    Ok((film, stats))
+}
+
+/// Samples per pixel of the adaptive pilot pass.
+const ADAPTIVE_PILOT: u32 = 4;
+
+/// Which samples each pixel takes.
+enum SamplePlan {
+    Uniform {
+        spp: u32,
+        range: Range<u32>,
+        seed: u64,
+    },
+    /// Adaptive sampling: pixel i takes counts[i] samples (all of its own strata).
+    PerPixel { counts: Vec<u32>, seed: u64 },
+}
+
+/// Shares `spp` samples per pixel on average out in proportion to each pixel's standard
+/// deviation (which minimises the summed variance for a fixed budget). A pilot of a few
+/// samples can miss noise that is there (four light samples that happen to agree), so each
+/// pixel takes the largest deviation in its 3x3 neighbourhood, and keeps at least half the
+/// average.
+fn allocate(pilot: &Film, pilot_sq: &[f64], spp: u32) -> Vec<u32> {
+    let n = ADAPTIVE_PILOT as f64;
+    let (w, h) = (pilot.width, pilot.height);
+    let sigma: Vec<f64> = pilot
+        .pixels
+        .iter()
+        .zip(pilot_sq)
+        .map(|(p, sq)| {
+            let m = p.mean();
+            let mean = (m[0] + m[1] + m[2]) / 3.0;
+            ((sq - n * mean * mean) / (n - 1.0)).max(0.0).sqrt()
+        })
+        .collect();
+    let spread: Vec<f64> = (0..w * h)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            let mut m = 0.0f64;
+            for yy in y.saturating_sub(1)..(y + 2).min(h) {
+                for xx in x.saturating_sub(1)..(x + 2).min(w) {
+                    m = m.max(sigma[yy * w + xx]);
+                }
+            }
+            m
+        })
+        .collect();
+    let floor = (spp / 2).max(1);
+    let pixels = spread.len() as f64;
+    let spare = (spp as f64 - floor as f64) * pixels;
+    let total: f64 = spread.iter().sum();
+    spread
+        .iter()
+        .map(|s| {
+            let extra = if total > 0.0 {
+                spare * s / total
+            } else {
+                spare / pixels
+            };
+            floor + extra.round() as u32
+        })
+        .collect()
+}
+
+/// One pass over the image: the film, each pixel's sum of squared luminance (for noise
+/// estimates) and the rays traced.
+fn render_pass(
+    scene: &PreparedScene,
+    options: &RenderOptions,
+    plan: &SamplePlan,
+    progress: &dyn Progress,
+) -> (Film, Vec<f64>, RayCounts) {
+    let (w, h) = (options.width, options.height);
     let tiles: Vec<(usize, usize)> = (0..h.div_ceil(TILE))
         .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
         .collect();
@@ -165,20 +298,36 @@ pub fn render(
     integrator.roulette = options.roulette;
     integrator.area_lights = options.area_lights;
     integrator.splitting = options.splitting;
-    let render_tile = |&(x0, y0): &(usize, usize)| {
-        let mut sampler = if options.stratified {
+    integrator.light_samples = options.light_samples;
+    let new_sampler = |spp: u32| {
+        if options.stratified {
             PixelSampler::new(spp)
         } else {
             PixelSampler::independent(spp)
-        };
+        }
+    };
+    let render_tile = |&(x0, y0): &(usize, usize)| {
+        let mut sampler = new_sampler(1);
         let mut counts = RayCounts::default();
         let mut sums = Vec::with_capacity(TILE * TILE);
+        let mut squares = Vec::with_capacity(TILE * TILE);
         let mut non_finite = Vec::new();
         for y in y0..(y0 + TILE).min(h) {
             for x in x0..(x0 + TILE).min(w) {
+                let (spp, range, seed) = match plan {
+                    SamplePlan::Uniform { spp, range, seed } => (*spp, range.clone(), *seed),
+                    SamplePlan::PerPixel { counts, seed } => {
+                        let n = counts[y * w + x].max(1);
+                        (n, 0..n, *seed)
+                    }
+                };
+                if sampler.samples_per_pixel() != spp {
+                    sampler = new_sampler(spp);
+                }
                 let mut sum = PixelSum::default();
-                for index in range.clone() {
-                    sampler.start(x as u32, y as u32, index, options.seed);
+                let mut square = 0.0;
+                for index in range {
+                    sampler.start(x as u32, y as u32, index, seed);
                     let (u, v) = sampler.get_2d();
                     let sx = (x as f64 + u) / w as f64 - 0.5;
                     let sy = 0.5 - (y as f64 + v) / h as f64;
@@ -187,40 +336,34 @@ pub fn render(
                     let l = integrator.radiance(&ray, &mut sampler, &mut counts);
                     if l.is_finite() {
                         sum.add(l.to_array());
+                        let y = (l.x + l.y + l.z) / 3.0;
+                        square += y * y;
                     } else {
                         sum.add([0.0; 3]);
                         non_finite.push((x as u32, y as u32));
                     }
                 }
                 sums.push(sum);
+                squares.push(square);
             }
         }
         let n = done.fetch_add(1, Ordering::Relaxed) + 1;
         progress.advance(n, total);
-        (sums, counts, non_finite)
+        (sums, squares, counts, non_finite)
     };
-    let results: Vec<_> = match options.threads {
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build()
-            .map_err(|e| RenderError(format!("cannot start {n} threads: {e}")))?
-            .install(|| tiles.par_iter().map(render_tile).collect()),
-        None => tiles.par_iter().map(render_tile).collect(),
-    };
+    let results: Vec<_> = tiles.par_iter().map(render_tile).collect();
     let mut film = Film::new(w, h);
+    let mut all_squares = vec![0.0; w * h];
     let mut rays = RayCounts::default();
-    for (&(x0, y0), (sums, counts, non_finite)) in tiles.iter().zip(results) {
+    for (&(x0, y0), (sums, squares, counts, non_finite)) in tiles.iter().zip(results) {
         let tw = (x0 + TILE).min(w) - x0;
-        for (i, s) in sums.into_iter().enumerate() {
-            film.pixels[(y0 + i / tw) * w + x0 + i % tw] = s;
+        for (i, (s, q)) in sums.into_iter().zip(squares).enumerate() {
+            let at = (y0 + i / tw) * w + x0 + i % tw;
+            film.pixels[at] = s;
+            all_squares[at] = q;
         }
         rays.add(&counts);
         film.non_finite.extend(non_finite);
     }
-    let stats = RenderStats {
-        wall: start.elapsed(),
-        samples: (w * h) as u64 * (range.end - range.start) as u64,
-        rays,
-    };
-    Ok((film, stats))
+    (film, all_squares, rays)
 }
