@@ -1,6 +1,7 @@
 use glam::DVec3;
 
-use crate::scene::{Colour, Pattern, Pigment, PigmentKind};
+use super::pattern::{pattern_index, pattern_value};
+use crate::scene::{Colour, Pigment, PigmentKind};
 
 /// The pigment's colour at a world-space point.
 pub fn evaluate_pigment(pigment: &Pigment, world: DVec3) -> Colour {
@@ -11,20 +12,68 @@ pub fn evaluate_pigment(pigment: &Pigment, world: DVec3) -> Colour {
                 return Colour::BLACK;
             }
             let p = pigment.transform.inverse_point(world);
-            let index = list_pattern_index(*pattern, p) % entries.len();
+            let index = pattern_index(pattern, p).min(entries.len() - 1);
             evaluate_pigment(&entries[index], world)
+        }
+        PigmentKind::ColourMap { pattern, map } => {
+            let p = pigment.transform.inverse_point(world);
+            let v = pattern_value(pattern, p);
+            match blend_position(map, v, |e| e.0) {
+                Blend::One(i) => map[i].1,
+                Blend::Two(i, t) => mix(&map[i].1, &map[i + 1].1, t),
+                Blend::None => Colour::BLACK,
+            }
+        }
+        PigmentKind::PigmentMap { pattern, map } => {
+            let p = pigment.transform.inverse_point(world);
+            let v = pattern_value(pattern, p);
+            match blend_position(map, v, |e| e.0) {
+                Blend::One(i) => evaluate_pigment(&map[i].1, world),
+                Blend::Two(i, t) => mix(
+                    &evaluate_pigment(&map[i].1, world),
+                    &evaluate_pigment(&map[i + 1].1, world),
+                    t,
+                ),
+                Blend::None => Colour::BLACK,
+            }
         }
     }
 }
 
-/// Which entry of a list pattern a pattern-space point selects.
-pub fn list_pattern_index(pattern: Pattern, p: DVec3) -> usize {
-    match pattern {
-        Pattern::Checker => {
-            // POV-Ray nudges by 1e-10 so that faces at integer coordinates fall consistently.
-            let s = (p.x + 1e-10).floor() + (p.y + 1e-10).floor() + (p.z + 1e-10).floor();
-            (s.rem_euclid(2.0)) as usize
+/// Where a value falls in a blend map: one entry, or between entry i and i + 1.
+pub enum Blend {
+    None,
+    One(usize),
+    Two(usize, f64),
+}
+
+/// POV-Ray's blend-map lookup: values below the first entry take the first, above the last
+/// the last; between two entries the colours mix linearly (all five channels); equal
+/// values make a sharp step.
+pub fn blend_position<T>(map: &[T], v: f64, key: impl Fn(&T) -> f64) -> Blend {
+    let n = map.len();
+    if n == 0 {
+        return Blend::None;
+    }
+    if v <= key(&map[0]) {
+        return Blend::One(0);
+    }
+    for i in 1..n {
+        let hi = key(&map[i]);
+        if v < hi {
+            let lo = key(&map[i - 1]);
+            let t = if hi > lo { (v - lo) / (hi - lo) } else { 1.0 };
+            return Blend::Two(i - 1, t);
         }
+    }
+    Blend::One(n - 1)
+}
+
+pub fn mix(a: &Colour, b: &Colour, t: f64) -> Colour {
+    Colour {
+        rgb: a.rgb + (b.rgb - a.rgb) * t,
+        filter: a.filter + (b.filter - a.filter) * t,
+        transmit: a.transmit + (b.transmit - a.transmit) * t,
     }
 }
 
@@ -32,6 +81,7 @@ pub fn list_pattern_index(pattern: Pattern, p: DVec3) -> usize {
 mod tests {
     use super::*;
     use crate::geometry::Transform;
+    use crate::scene::{Pattern, PatternKind};
 
     #[test]
     fn checker_alternates_on_unit_cubes() {
@@ -39,7 +89,7 @@ mod tests {
         let b = Colour::rgb(0.0, 1.0, 0.0);
         let mut pig = Pigment {
             kind: PigmentKind::List {
-                pattern: Pattern::Checker,
+                pattern: Pattern::new(PatternKind::Checker),
                 entries: vec![Pigment::solid(a), Pigment::solid(b)],
             },
             transform: Transform::IDENTITY,
@@ -52,5 +102,26 @@ mod tests {
         assert_eq!(evaluate_pigment(&pig, DVec3::new(1.0, 0.0, 0.0)), b);
         pig.transform_by(&Transform::scale(DVec3::splat(2.0)).unwrap());
         assert_eq!(evaluate_pigment(&pig, DVec3::new(1.5, 0.5, 0.5)), a);
+    }
+
+    #[test]
+    fn colour_map_blends_all_channels_and_steps() {
+        let mut c1 = Colour::rgb(0.0, 0.0, 0.0);
+        c1.transmit = 1.0;
+        let c2 = Colour::rgb(1.0, 1.0, 1.0);
+        let pig = Pigment {
+            kind: PigmentKind::ColourMap {
+                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                map: vec![(0.2, c1), (0.6, c2), (0.6, Colour::BLACK)],
+            },
+            transform: Transform::IDENTITY,
+        };
+        let c = evaluate_pigment(&pig, DVec3::new(0.4, 0.0, 0.0));
+        assert!((c.rgb.x - 0.5).abs() < 1e-9 && (c.transmit - 0.5).abs() < 1e-9);
+        assert_eq!(evaluate_pigment(&pig, DVec3::new(0.1, 0.0, 0.0)), c1);
+        assert_eq!(
+            evaluate_pigment(&pig, DVec3::new(0.7, 0.0, 0.0)),
+            Colour::BLACK
+        );
     }
 }

@@ -194,14 +194,23 @@ impl Evaluator<'_> {
                 }
                 "texture" => {
                     textures += 1;
-                    if textures > 1 {
-                        return Err(self.err(
-                            tok.span,
-                            "unsupported: layered textures (`texture` after `texture`) are not supported yet",
-                        ));
-                    }
                     self.next()?;
-                    object.texture = Some(self.texture_body(self.default_texture.clone())?);
+                    let top = self.texture_body(self.default_texture.clone())?;
+                    let below = if textures > 1 {
+                        object.texture.take()
+                    } else {
+                        None
+                    };
+                    object.texture = Some(Self::layer_texture(below, top));
+                }
+                "normal" => {
+                    self.next()?;
+                    let mut texture = object
+                        .texture
+                        .take()
+                        .unwrap_or_else(|| self.default_texture.clone());
+                    texture.normal = self.normal_body(texture.normal.take())?;
+                    object.texture = Some(texture);
                 }
                 "interior" => {
                     self.next()?;
@@ -220,7 +229,7 @@ impl Evaluator<'_> {
                     self.next()?;
                     object.flags.inverse = !object.flags.inverse;
                 }
-                "normal" | "bounded_by" | "clipped_by" | "photons" | "radiosity" | "material"
+                "bounded_by" | "clipped_by" | "photons" | "radiosity" | "material"
                 | "interior_texture" | "sturm" | "open" | "split_union" | "cutaway_textures"
                 | "no_radiosity" => return Err(self.unsupported(&tok, &word)),
                 _ => return Err(self.stray_in_block(&tok, what)),
@@ -371,10 +380,12 @@ impl Evaluator<'_> {
                         }
                         self.next()?;
                     }
-                    Some(
-                        w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour"
-                        | "caustics" | "dispersion" | "dispersion_samples" | "media"),
-                    ) => {
+                    Some(w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour")) => {
+                        let w = w.to_string();
+                        self.next()?;
+                        self.interior_fade_item(&w, &mut interior)?;
+                    }
+                    Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
                         let w = w.to_string();
                         return Err(self.unsupported(&tok, &w));
                     }
