@@ -82,18 +82,18 @@ impl Evaluator<'_> {
     pub(super) fn pigment_body(&mut self, base: Pigment) -> R<Pigment> {
         let open = self.expect(Punct::LBrace, "after `pigment`")?;
         self.enter(open.span)?;
-        let r = self.pigment_items(base);
+        let r = self.pigment_items(base, Punct::RBrace);
         self.leave();
         let p = r?;
         self.expect(Punct::RBrace, "to close the pigment")?;
         Ok(p)
     }
 
-    fn pigment_items(&mut self, mut p: Pigment) -> R<Pigment> {
+    fn pigment_items(&mut self, mut p: Pigment, close: Punct) -> R<Pigment> {
         let mut first = true;
         loop {
             let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
+            if tok.is_punct(close) {
                 return Ok(p);
             }
             if let Some(t) = self.transform_modifier()? {
@@ -180,7 +180,8 @@ impl Evaluator<'_> {
                 size: DVec3::new(8.0, 3.0, 4.5),
                 mortar: 0.5,
             },
-            "gradient" => PatternKind::Gradient(self.vector3()?),
+            // POV-Ray uses the direction only: `gradient <2,0,0>` repeats every unit.
+            "gradient" => PatternKind::Gradient(self.vector3()?.normalize_or_zero()),
             "onion" => PatternKind::Onion,
             "radial" => PatternKind::Radial,
             "spiral1" => PatternKind::Spiral1(self.float()?),
@@ -447,9 +448,11 @@ impl Evaluator<'_> {
             while self.eat(Punct::LBracket)? {
                 let v = self.float()?;
                 self.eat(Punct::Comma)?;
-                let tok = self.peek()?;
-                let Some(p) = self.list_entry()? else {
-                    return Err(self.expected("a pigment in the pigment map", &tok));
+                // Entries are pigment bodies: `[0.5 checker rgb 1, rgb 0]`, `[1 Named]`.
+                let p = if self.peek()?.is_ident("pigment") {
+                    self.list_entry()?.unwrap_or_default()
+                } else {
+                    self.pigment_items(Pigment::default(), Punct::RBracket)?
                 };
                 map.push((v, p));
                 self.expect(Punct::RBracket, "to close the pigment map entry")?;
@@ -471,17 +474,12 @@ impl Evaluator<'_> {
             while self.eat(Punct::LBracket)? {
                 let v = self.float()?;
                 self.eat(Punct::Comma)?;
-                let tok = self.peek()?;
-                let t = if tok.is_ident("texture") {
+                // Entries are texture bodies: `[0.5 T_Named]`, `[1 pigment {...} finish {...}]`.
+                let t = if self.peek()?.is_ident("texture") {
                     self.next()?;
                     self.texture_body(self.default_texture.clone())?
-                } else if let Some(Value::Texture(t)) =
-                    tok.ident().and_then(|w| self.lookup(w)).cloned()
-                {
-                    self.next()?;
-                    *t
                 } else {
-                    return Err(self.expected("a texture in the texture map", &tok));
+                    self.texture_items(self.default_texture.clone(), Punct::RBracket)?
                 };
                 map.push((v, t));
                 self.expect(Punct::RBracket, "to close the texture map entry")?;
@@ -786,17 +784,17 @@ impl Evaluator<'_> {
     pub(super) fn texture_body(&mut self, base: Texture) -> R<Texture> {
         let open = self.expect(Punct::LBrace, "after `texture`")?;
         self.enter(open.span)?;
-        let r = self.texture_items(base);
+        let r = self.texture_items(base, Punct::RBrace);
         self.leave();
         let t = r?;
         self.expect(Punct::RBrace, "to close the texture")?;
         Ok(t)
     }
 
-    fn texture_items(&mut self, mut t: Texture) -> R<Texture> {
+    fn texture_items(&mut self, mut t: Texture, close: Punct) -> R<Texture> {
         loop {
             let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
+            if tok.is_punct(close) {
                 return Ok(t);
             }
             if let Some(tr) = self.transform_modifier()? {
