@@ -136,6 +136,16 @@ pub fn may_transmit(texture: &Texture) -> bool {
                 map.iter().any(|(_, c)| c.filter > 0.0 || c.transmit > 0.0)
             }
             PigmentKind::PigmentMap { map, .. } => map.iter().any(|(_, p)| pigment(p)),
+            PigmentKind::Image(im) => {
+                im.once
+                    || im.filter_all > 0.0
+                    || im.transmit_all > 0.0
+                    || im
+                        .image
+                        .pixels
+                        .iter()
+                        .any(|c| c.filter > 0.0 || c.transmit > 0.0)
+            }
         }
     }
     let own = match &texture.map {

@@ -12,8 +12,8 @@ pub use camera::{Camera, CameraSpec};
 pub use light::{AreaLight, Light, LightKind};
 pub use object::{Object, ObjectFlags, Shape};
 pub use texture::{
-    Finish, Interior, Normal, Pattern, PatternKind, Pigment, PigmentKind, Reflection, Texture,
-    TextureMap, Turbulence, Warp, Wave,
+    Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
+    PigmentKind, Reflection, Texture, TextureMap, Turbulence, Warp, Wave,
 };
 
 use glam::DVec3;

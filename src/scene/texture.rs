@@ -192,6 +192,39 @@ pub enum PigmentKind {
         pattern: Pattern,
         map: Vec<(f64, Pigment)>,
     },
+    Image(ImageMap),
+}
+
+/// How an image wraps onto pattern space (`map_type`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MapType {
+    /// 0: the unit square of the x-y plane, repeated, projected along z.
+    Planar,
+    /// 1: longitude and latitude around the y axis.
+    Spherical,
+    /// 2: around the y axis, y from 0 to 1.
+    Cylindrical,
+}
+
+/// Decoded pixels, linear (PNG's sRGB decoded), row 0 at the top.
+#[derive(Debug, PartialEq)]
+pub struct ImageData {
+    pub width: usize,
+    pub height: usize,
+    pub pixels: Vec<Colour>,
+}
+
+/// `image_map { png "file" map_type n interpolate n once filter all f transmit all t }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageMap {
+    pub image: std::sync::Arc<ImageData>,
+    pub map_type: MapType,
+    /// Bilinear between pixel centres (`interpolate 2`) instead of the nearest pixel.
+    pub bilinear: bool,
+    /// `once`: one copy; outside it the pigment is fully transparent (measured).
+    pub once: bool,
+    pub filter_all: f64,
+    pub transmit_all: f64,
 }
 
 /// A pigment with the transform from pattern space to world space.
@@ -235,7 +268,7 @@ impl Pigment {
 
     pub fn pattern_mut(&mut self) -> Option<&mut Pattern> {
         match &mut self.kind {
-            PigmentKind::Solid(_) => None,
+            PigmentKind::Solid(_) | PigmentKind::Image(_) => None,
             PigmentKind::List { pattern, .. }
             | PigmentKind::ColourMap { pattern, .. }
             | PigmentKind::PigmentMap { pattern, .. } => Some(pattern),
