@@ -159,3 +159,17 @@ fn bad_input_is_an_error_not_a_panic() {
         assert!(c.iter().all(|l| l.colour.rgb.is_finite()));
     }
 }
+
+#[test]
+fn declared_colour_maps_are_reused() {
+    let s = load(
+        "#version 3.7;\n#declare M = color_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] }\n\
+         plane { y, 0 pigment { gradient x color_map { M } } }",
+    );
+    let p = &s.objects[0].texture.as_ref().expect("t").pigment;
+    let PigmentKind::ColourMap { map, .. } = &p.kind else {
+        panic!("{:?}", p.kind)
+    };
+    assert_eq!(map.len(), 2);
+    assert_eq!(map[1].1.rgb, DVec3::new(0.0, 0.0, 1.0));
+}

@@ -421,18 +421,27 @@ impl Evaluator<'_> {
         self.enter(open.span)?;
         let r = (|| -> R<Vec<(f64, Colour)>> {
             let mut map = Vec::new();
+            // `color_map { Declared }`: a map declared earlier (kept as a pigment).
+            if let Some(Value::Pigment(named)) =
+                self.peek()?.ident().and_then(|w| self.lookup(w)).cloned()
+                && let PigmentKind::ColourMap { map: m, .. } = named.kind
+            {
+                self.next()?;
+                map = m;
+            }
             while self.eat(Punct::LBracket)? {
                 let v = self.float()?;
                 self.eat(Punct::Comma)?;
-                let (c, _) = self.colour()?;
-                // The old form `[a b colour c colour d]` gives two entries.
-                if self.starts_float()? || self.peek()?.is_punct(Punct::Comma) {
-                    self.eat(Punct::Comma)?;
+                // The old form `[a, b colour c colour d]`: a second value before the colours.
+                if self.starts_float()? {
                     let v2 = self.float()?;
+                    let (c1, _) = self.colour()?;
+                    self.eat(Punct::Comma)?;
                     let (c2, _) = self.colour()?;
-                    map.push((v, colour_of(c)));
+                    map.push((v, colour_of(c1)));
                     map.push((v2, colour_of(c2)));
                 } else {
+                    let (c, _) = self.colour()?;
                     map.push((v, colour_of(c)));
                 }
                 self.expect(Punct::RBracket, "to close the colour map entry")?;
@@ -1003,4 +1012,32 @@ fn load_png(path: &std::path::Path) -> Result<ImageData, String> {
         height: h,
         pixels,
     })
+}
+
+impl Evaluator<'_> {
+    /// `#declare M = color_map { ... }`: kept as a gradient pigment with that map, since the
+    /// value types have no colour map of their own; `color_map { M }` takes the map back.
+    pub(super) fn declared_colour_map(&mut self) -> R<Pigment> {
+        let map = self.colour_map_body()?;
+        Ok(Pigment {
+            kind: PigmentKind::ColourMap {
+                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                map,
+            },
+            transform: Transform::IDENTITY,
+        })
+    }
+}
+
+impl Evaluator<'_> {
+    /// `#declare T = texture {A} texture {B}`: a layered texture, B on top. Looks ahead
+    /// without running directives, since the declaration is not finished.
+    pub(super) fn more_layers(&mut self, mut t: Texture) -> R<Texture> {
+        while self.raw_peek(0).is_some_and(|tok| tok.is_ident("texture")) {
+            self.raw_next();
+            let top = self.texture_body(self.default_texture.clone())?;
+            t = Self::layer_texture(Some(t), top);
+        }
+        Ok(t)
+    }
 }
