@@ -16,6 +16,7 @@ fn matte(c: f64) -> Option<Texture> {
             diffuse: 1.0,
             ..Finish::default()
         },
+        ..Texture::default()
     })
 }
 

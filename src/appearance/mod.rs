@@ -3,6 +3,9 @@
 //! (shared/pov-semantics.md), including where that is not physical.
 
 pub mod finish;
+pub mod noise;
+pub mod normal;
+pub mod pattern;
 pub mod pigment;
 pub mod texture;
 

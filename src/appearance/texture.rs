@@ -4,9 +4,12 @@
 
 use glam::DVec3;
 
-use crate::scene::{Colour, Finish, Texture};
+use crate::scene::{Colour, Finish, Pigment, PigmentKind, Texture};
 
 use super::evaluate_pigment;
+use super::normal::perturb;
+use super::pattern::pattern_value;
+use super::pigment::{Blend, blend_position, mix};
 
 /// At most this many layers are shaded; POV-Ray scenes rarely stack more than a few.
 pub const MAX_LAYERS: usize = 8;
@@ -54,30 +57,152 @@ impl<'a> Layers<'a> {
     }
 }
 
-/// Resolves a texture at a world-space point.
+/// Resolves a texture at a world-space point: the texture itself, then the layers below
+/// it. A patterned texture (texture_map) contributes its entry at the point; between two
+/// entries the colours blend and the finish of the nearer entry is used (exact when the
+/// entries share a finish, which is how texture maps are mostly written).
 pub fn texture_layers<'a>(texture: &'a Texture, p: DVec3) -> Layers<'a> {
     let mut layers = Layers::default();
-    layers.push(Layer {
-        colour: evaluate_pigment(&texture.pigment, p),
-        finish: &texture.finish,
-    });
+    push_texture(&mut layers, texture, p, 0);
+    for below in &texture.below {
+        push_texture(&mut layers, below, p, 0);
+    }
     layers
 }
 
-/// The shading normal after the texture's normal perturbation (none yet): `n` is the unit
-/// normal facing the viewer.
-pub fn perturbed_normal(_texture: &Texture, _p: DVec3, n: DVec3) -> DVec3 {
-    n
+/// Texture maps nest; beyond this depth a texture shows its own pigment.
+const MAX_NESTING: u32 = 8;
+
+fn push_texture<'a>(layers: &mut Layers<'a>, t: &'a Texture, p: DVec3, depth: u32) {
+    if let Some(map) = &t.map
+        && depth < MAX_NESTING
+    {
+        let q = map.transform.inverse_point(p);
+        let v = pattern_value(&map.pattern, q);
+        match blend_position(&map.entries, v, |e| e.0) {
+            Blend::One(i) => push_texture(layers, &map.entries[i].1, p, depth + 1),
+            Blend::Two(i, w) => {
+                let (a, b) = (&map.entries[i].1, &map.entries[i + 1].1);
+                let mut top_a = Layers::default();
+                push_texture(&mut top_a, a, p, depth + 1);
+                let mut top_b = Layers::default();
+                push_texture(&mut top_b, b, p, depth + 1);
+                let (Some(la), Some(lb)) = (top_a.iter().next(), top_b.iter().next()) else {
+                    return;
+                };
+                layers.push(Layer {
+                    colour: mix(&la.colour, &lb.colour, w),
+                    finish: if w < 0.5 { la.finish } else { lb.finish },
+                });
+            }
+            Blend::None => {}
+        }
+        return;
+    }
+    layers.push(Layer {
+        colour: evaluate_pigment(&t.pigment, p),
+        finish: &t.finish,
+    });
+}
+
+/// The shading normal after the texture's normal perturbation: `n` is the unit normal
+/// facing the viewer. The top layer's normal (or that of the texture-map entry at the
+/// point) applies.
+pub fn perturbed_normal(texture: &Texture, p: DVec3, n: DVec3) -> DVec3 {
+    let mut t = texture;
+    for _ in 0..MAX_NESTING {
+        let Some(map) = &t.map else { break };
+        let v = pattern_value(&map.pattern, map.transform.inverse_point(p));
+        t = match blend_position(&map.entries, v, |e| e.0) {
+            Blend::One(i) => &map.entries[i].1,
+            Blend::Two(i, w) => &map.entries[if w < 0.5 { i } else { i + 1 }].1,
+            Blend::None => return n,
+        };
+    }
+    match &t.normal {
+        Some(normal) => perturb(normal, p, n),
+        None => n,
+    }
 }
 
 /// Whether a texture can let light through anywhere (filter or transmit > 0 in any pigment
 /// entry). Opaque textures let shadow rays stop at the first hit.
 pub fn may_transmit(texture: &Texture) -> bool {
-    fn pigment(p: &crate::scene::Pigment) -> bool {
+    fn pigment(p: &Pigment) -> bool {
         match &p.kind {
-            crate::scene::PigmentKind::Solid(c) => c.filter > 0.0 || c.transmit > 0.0,
-            crate::scene::PigmentKind::List { entries, .. } => entries.iter().any(pigment),
+            PigmentKind::Solid(c) => c.filter > 0.0 || c.transmit > 0.0,
+            PigmentKind::List { entries, .. } => entries.iter().any(pigment),
+            PigmentKind::ColourMap { map, .. } => {
+                map.iter().any(|(_, c)| c.filter > 0.0 || c.transmit > 0.0)
+            }
+            PigmentKind::PigmentMap { map, .. } => map.iter().any(|(_, p)| pigment(p)),
+            PigmentKind::Image(im) => {
+                im.once
+                    || im.filter_all > 0.0
+                    || im.transmit_all > 0.0
+                    || im
+                        .image
+                        .pixels
+                        .iter()
+                        .any(|c| c.filter > 0.0 || c.transmit > 0.0)
+            }
         }
     }
-    pigment(&texture.pigment)
+    let own = match &texture.map {
+        Some(m) => m.entries.iter().any(|(_, t)| may_transmit(t)),
+        None => pigment(&texture.pigment),
+    };
+    own || texture.below.iter().any(may_transmit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{Pattern, PatternKind, TextureMap, Transform};
+
+    #[test]
+    fn texture_map_picks_and_blends_entries() {
+        let red = Texture {
+            pigment: Pigment::solid(Colour::rgb(1.0, 0.0, 0.0)),
+            ..Texture::default()
+        };
+        let blue = Texture {
+            pigment: Pigment::solid(Colour::rgb(0.0, 0.0, 1.0)),
+            ..Texture::default()
+        };
+        let t = Texture {
+            map: Some(Box::new(TextureMap {
+                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                transform: Transform::IDENTITY,
+                entries: vec![(0.0, red), (1.0, blue)],
+            })),
+            ..Texture::default()
+        };
+        let l = texture_layers(&t, DVec3::new(0.25, 0.0, 0.0));
+        assert_eq!(l.len(), 1);
+        let c = l.iter().next().unwrap().colour.rgb;
+        assert!((c - DVec3::new(0.75, 0.0, 0.25)).length() < 1e-9);
+        assert!(!may_transmit(&t));
+    }
+
+    #[test]
+    fn layers_come_top_first() {
+        let mut clear = Colour::rgb(1.0, 1.0, 1.0);
+        clear.transmit = 0.5;
+        let bottom = Texture {
+            pigment: Pigment::solid(Colour::rgb(0.0, 1.0, 0.0)),
+            ..Texture::default()
+        };
+        let top = Texture {
+            pigment: Pigment::solid(clear),
+            below: vec![bottom],
+            ..Texture::default()
+        };
+        let l = texture_layers(&top, DVec3::ZERO);
+        let v: Vec<_> = l.iter().map(|x| x.colour).collect();
+        assert_eq!(v.len(), 2);
+        assert_eq!(v[0], clear);
+        assert_eq!(v[1].rgb, DVec3::new(0.0, 1.0, 0.0));
+        assert!(may_transmit(&top));
+    }
 }

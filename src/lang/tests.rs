@@ -539,9 +539,9 @@ fn golden_unsupported_feature() {
     let e = error("#version 3.7;\n\nlathe { 0, y, 1 }");
     assert_eq!(e.message, "unsupported: `lathe` is not supported yet");
     assert_eq!((e.line(), e.column()), (Some(3), Some(1)));
-    let e = error("sphere { 0, 1 normal { bumps 0.5 } }");
-    assert_eq!(e.message, "unsupported: `normal` is not supported yet");
-    assert_eq!((e.line(), e.column()), (Some(1), Some(15)));
+    let e = error("sphere { 0, 1 normal { crackle 0.5 } }");
+    assert_eq!(e.message, "unsupported: `crackle` is not supported yet");
+    assert_eq!((e.line(), e.column()), (Some(1), Some(24)));
 }
 
 #[test]
@@ -843,10 +843,10 @@ fn unsupported_declarations_fail_only_when_used() {
     );
     assert_eq!(l.scene.objects.len(), 1);
     let e = error(
-        "#declare Marble = texture { pigment { marble } }\n\
+        "#declare Marble = texture { pigment { crackle } }\n\
          sphere { 0, 1 texture { Marble } }",
     );
-    assert_eq!(e.message, "unsupported: `marble` is not supported yet");
+    assert_eq!(e.message, "unsupported: `crackle` is not supported yet");
     assert_eq!((e.line(), e.column()), (Some(2), Some(25)));
     assert!(
         e.to_string()

@@ -214,9 +214,9 @@ impl Builder {
             double_illuminate: looks.flags.double_illuminate,
             transmits: may_transmit(looks.texture),
             ior: interior.ior,
-            fade_distance: 0.0,
-            fade_power: 0.0,
-            fade_colour: DVec3::ZERO,
+            fade_distance: interior.fade_distance,
+            fade_power: interior.fade_power,
+            fade_colour: interior.fade_colour,
         });
         (self.materials.len() - 1) as u32
     }

@@ -11,7 +11,10 @@ mod texture;
 pub use camera::{Camera, CameraSpec};
 pub use light::{AreaLight, Light, LightKind};
 pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
-pub use texture::{Finish, Interior, Pattern, Pigment, PigmentKind, Reflection, Texture};
+pub use texture::{
+    Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
+    PigmentKind, Reflection, Texture, TextureMap, Turbulence, Warp, Wave,
+};
 
 use glam::DVec3;
 

@@ -2,24 +2,176 @@ use glam::DVec3;
 
 use super::{Colour, Transform};
 
-/// A texture as POV-Ray layers it: what colour (pigment), and how light interacts (finish).
+/// A texture as POV-Ray layers it: what colour (pigment), how the surface is bumped
+/// (normal), and how light interacts (finish). A texture with a `map` is patterned: its
+/// own pigment, normal and finish are unused, the map's entries are shown instead.
+/// `below` holds the layers under this one (`texture {A} texture {B}` puts B on top of A),
+/// nearest first, so the top layer owns the whole stack.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Texture {
     pub pigment: Pigment,
+    pub normal: Option<Normal>,
     pub finish: Finish,
+    pub map: Option<Box<TextureMap>>,
+    pub below: Vec<Texture>,
 }
 
 impl Texture {
     pub fn transform_by(&mut self, t: &Transform) {
         self.pigment.transform_by(t);
+        if let Some(n) = &mut self.normal {
+            n.transform_by(t);
+        }
+        if let Some(m) = &mut self.map {
+            m.transform = m.transform.then(t);
+            for (_, e) in &mut m.entries {
+                e.transform_by(t);
+            }
+        }
+        for b in &mut self.below {
+            b.transform_by(t);
+        }
     }
 }
 
-/// Procedural patterns: a function of the point in pattern space.
+/// `texture_map { [v texture {...}] ... }` under a pattern.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextureMap {
+    pub pattern: Pattern,
+    pub transform: Transform,
+    pub entries: Vec<(f64, Texture)>,
+}
+
+/// POV-Ray's wave types, applied to a pattern's value after frequency and phase.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Pattern {
-    /// Alternates between entry 0 and 1 on unit cubes.
+pub enum Wave {
+    Ramp,
+    Sine,
+    Triangle,
+    Scallop,
+    Cubic,
+    Poly(f64),
+}
+
+/// Classic turbulence (and `warp { turbulence }`): amount per axis and the fractal sum's
+/// octaves, omega (amplitude ratio) and lambda (frequency ratio).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Turbulence {
+    pub amount: DVec3,
+    pub octaves: u32,
+    pub omega: f64,
+    pub lambda: f64,
+}
+
+impl Default for Turbulence {
+    fn default() -> Self {
+        Turbulence {
+            amount: DVec3::ZERO,
+            octaves: 6,
+            omega: 0.5,
+            lambda: 2.0,
+        }
+    }
+}
+
+/// A step in a pattern's warp chain, kept in source order so that transforms written
+/// before a warp are warped with the pattern and those after it move the warped pattern.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Warp {
+    Turbulence(Turbulence),
+    Transform(Transform),
+}
+
+/// The pattern functions; each gives a value in [0, 1] (list patterns an entry index).
+#[derive(Clone, Debug, PartialEq)]
+pub enum PatternKind {
     Checker,
+    Hexagon,
+    Brick {
+        size: DVec3,
+        mortar: f64,
+    },
+    Gradient(DVec3),
+    Onion,
+    Radial,
+    Spiral1(f64),
+    Spiral2(f64),
+    Leopard,
+    Marble,
+    Wood,
+    Agate {
+        turbulence: f64,
+    },
+    Bozo,
+    Spotted,
+    Granite,
+    Wrinkles,
+    Bumps,
+    Dents,
+    Ripples,
+    Waves,
+    Planar,
+    Spherical,
+    Cylindrical,
+    Boxed,
+    /// `pigment_pattern { ... }`: the grey value (0.297 r + 0.589 g + 0.114 b) of a pigment.
+    PigmentPattern(Box<Pigment>),
+}
+
+impl PatternKind {
+    /// Marble, wood and agate read the classic turbulence themselves instead of warping.
+    pub fn handles_turbulence(&self) -> bool {
+        matches!(
+            self,
+            PatternKind::Marble | PatternKind::Wood | PatternKind::Agate { .. }
+        )
+    }
+
+    /// Patterns that select one of a fixed number of entries.
+    pub fn list_size(&self) -> Option<usize> {
+        match self {
+            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Hexagon => Some(3),
+            _ => None,
+        }
+    }
+
+    /// Marble, wood and the spirals default to a triangle wave (measured with POV-Ray 3.7).
+    pub fn default_wave(&self) -> Wave {
+        match self {
+            PatternKind::Marble
+            | PatternKind::Wood
+            | PatternKind::Spiral1(_)
+            | PatternKind::Spiral2(_) => Wave::Triangle,
+            _ => Wave::Ramp,
+        }
+    }
+}
+
+/// A pattern with its value modifiers (frequency, phase, wave, turbulence, warps).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pattern {
+    pub kind: PatternKind,
+    pub frequency: f64,
+    pub phase: f64,
+    pub wave: Wave,
+    pub turbulence: Option<Turbulence>,
+    pub warps: Vec<Warp>,
+    pub noise_generator: u8,
+}
+
+impl Pattern {
+    pub fn new(kind: PatternKind) -> Pattern {
+        Pattern {
+            wave: kind.default_wave(),
+            kind,
+            frequency: 1.0,
+            phase: 0.0,
+            turbulence: None,
+            warps: Vec::new(),
+            noise_generator: 2,
+        }
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -30,6 +182,49 @@ pub enum PigmentKind {
         pattern: Pattern,
         entries: Vec<Pigment>,
     },
+    /// A pattern value looked up in a colour map (sorted by value).
+    ColourMap {
+        pattern: Pattern,
+        map: Vec<(f64, Colour)>,
+    },
+    /// A pattern value blending between pigments (sorted by value).
+    PigmentMap {
+        pattern: Pattern,
+        map: Vec<(f64, Pigment)>,
+    },
+    Image(ImageMap),
+}
+
+/// How an image wraps onto pattern space (`map_type`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MapType {
+    /// 0: the unit square of the x-y plane, repeated, projected along z.
+    Planar,
+    /// 1: longitude and latitude around the y axis.
+    Spherical,
+    /// 2: around the y axis, y from 0 to 1.
+    Cylindrical,
+}
+
+/// Decoded pixels, linear (PNG's sRGB decoded), row 0 at the top.
+#[derive(Debug, PartialEq)]
+pub struct ImageData {
+    pub width: usize,
+    pub height: usize,
+    pub pixels: Vec<Colour>,
+}
+
+/// `image_map { png "file" map_type n interpolate n once filter all f transmit all t }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageMap {
+    pub image: std::sync::Arc<ImageData>,
+    pub map_type: MapType,
+    /// Bilinear between pixel centres (`interpolate 2`) instead of the nearest pixel.
+    pub bilinear: bool,
+    /// `once`: one copy; outside it the pigment is fully transparent (measured).
+    pub once: bool,
+    pub filter_all: f64,
+    pub transmit_all: f64,
 }
 
 /// A pigment with the transform from pattern space to world space.
@@ -56,10 +251,55 @@ impl Pigment {
 
     pub fn transform_by(&mut self, t: &Transform) {
         self.transform = self.transform.then(t);
-        if let PigmentKind::List { entries, .. } = &mut self.kind {
-            for e in entries {
-                e.transform_by(t);
+        match &mut self.kind {
+            PigmentKind::List { entries, .. } => {
+                for e in entries {
+                    e.transform_by(t);
+                }
             }
+            PigmentKind::PigmentMap { map, .. } => {
+                for (_, e) in map {
+                    e.transform_by(t);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    pub fn pattern_mut(&mut self) -> Option<&mut Pattern> {
+        match &mut self.kind {
+            PigmentKind::Solid(_) | PigmentKind::Image(_) => None,
+            PigmentKind::List { pattern, .. }
+            | PigmentKind::ColourMap { pattern, .. }
+            | PigmentKind::PigmentMap { pattern, .. } => Some(pattern),
+        }
+    }
+}
+
+/// `normal { pattern amount ... }`. `amount` is POV-Ray's bump height (also `bump_size`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Normal {
+    pub pattern: Pattern,
+    pub amount: f64,
+    pub transform: Transform,
+    /// The finite-difference step (world units) for patterns without their own normal.
+    pub accuracy: f64,
+}
+
+impl Normal {
+    pub fn new(pattern: Pattern) -> Normal {
+        Normal {
+            pattern,
+            amount: 0.5,
+            transform: Transform::IDENTITY,
+            accuracy: 0.02,
+        }
+    }
+
+    pub fn transform_by(&mut self, t: &Transform) {
+        self.transform = self.transform.then(t);
+        if let PatternKind::PigmentPattern(p) = &mut self.pattern.kind {
+            p.transform_by(t);
         }
     }
 }
@@ -100,6 +340,8 @@ pub struct Finish {
     pub ambient: DVec3,
     pub emission: DVec3,
     pub diffuse: f64,
+    /// `diffuse a, b`: the share of light reaching the back side (POV-Ray 3.7 default 0).
+    pub diffuse_back: f64,
     pub brilliance: f64,
     pub phong: f64,
     pub phong_size: f64,
@@ -108,6 +350,10 @@ pub struct Finish {
     pub metallic: f64,
     pub reflection: Reflection,
     pub conserve_energy: bool,
+    /// `crand`: a random amount subtracted per sample (POV-Ray: colour -= crand * random).
+    pub crand: f64,
+    /// `fresnel` in the finish (POV-Ray 3.7): also attenuates transmitted light by 1 - R.
+    pub fresnel: bool,
 }
 
 impl Default for Finish {
@@ -116,6 +362,7 @@ impl Default for Finish {
             ambient: DVec3::splat(0.1),
             emission: DVec3::ZERO,
             diffuse: 0.6,
+            diffuse_back: 0.0,
             brilliance: 1.0,
             phong: 0.0,
             phong_size: 40.0,
@@ -124,18 +371,31 @@ impl Default for Finish {
             metallic: 0.0,
             reflection: Reflection::default(),
             conserve_energy: false,
+            crand: 0.0,
+            fresnel: false,
         }
     }
 }
 
-/// What is inside a solid object: for now only the index of refraction.
+/// What is inside a solid object: the index of refraction and the fade of light along
+/// its path through it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Interior {
     pub ior: f64,
+    /// Distance at which light has faded to half (POV-Ray default 0: no fade).
+    pub fade_distance: f64,
+    /// 0 means no fade; >= 1000 means exponential fade.
+    pub fade_power: f64,
+    pub fade_colour: DVec3,
 }
 
 impl Default for Interior {
     fn default() -> Self {
-        Interior { ior: 1.0 }
+        Interior {
+            ior: 1.0,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+            fade_colour: DVec3::ZERO,
+        }
     }
 }

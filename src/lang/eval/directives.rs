@@ -410,7 +410,12 @@ impl Evaluator<'_> {
                     self.next()?;
                     self.default_texture.finish = self.finish_body(self.default_texture.finish)?;
                 }
-                Some(w @ ("normal" | "interior" | "media")) => {
+                Some("normal") => {
+                    self.next()?;
+                    let base = self.default_texture.normal.take();
+                    self.default_texture.normal = self.normal_body(base)?;
+                }
+                Some(w @ ("interior" | "media")) => {
                     let w = w.to_string();
                     return Err(self.unsupported(&tok, &w));
                 }

@@ -126,10 +126,14 @@ impl Evaluator<'_> {
                 self.next()?;
                 Value::Finish(Box::new(self.finish_body(self.default_texture.finish)?))
             }
+            "color_map" | "colour_map" => {
+                self.next()?;
+                Value::Pigment(Box::new(self.declared_colour_map()?))
+            }
             "texture" => {
                 self.next()?;
                 let t = self.texture_body(self.default_texture.clone())?;
-                self.no_layered_texture()?;
+                let t = self.more_layers(t)?;
                 Value::Texture(Box::new(t))
             }
             "interior" => {
@@ -154,20 +158,6 @@ impl Evaluator<'_> {
             }
             _ => self.expr()?.0,
         })
-    }
-
-    /// A second `texture` right after one makes a layered texture, which the model lacks.
-    /// Looks ahead without running directives, since the declaration is not finished.
-    pub(super) fn no_layered_texture(&mut self) -> R<()> {
-        if let Some(tok) = self.raw_peek(0).cloned()
-            && tok.is_ident("texture")
-        {
-            return Err(self.err(
-                tok.span,
-                "unsupported: layered textures (`texture` after `texture`) are not supported yet",
-            ));
-        }
-        Ok(())
     }
 
     /// `keyword {`: consumes both and returns the brace token for error messages.

@@ -355,14 +355,23 @@ impl Evaluator<'_> {
                 }
                 "texture" => {
                     textures += 1;
-                    if textures > 1 {
-                        return Err(self.err(
-                            tok.span,
-                            "unsupported: layered textures (`texture` after `texture`) are not supported yet",
-                        ));
-                    }
                     self.next()?;
-                    object.texture = Some(self.texture_body(self.default_texture.clone())?);
+                    let top = self.texture_body(self.default_texture.clone())?;
+                    let below = if textures > 1 {
+                        object.texture.take()
+                    } else {
+                        None
+                    };
+                    object.texture = Some(Self::layer_texture(below, top));
+                }
+                "normal" => {
+                    self.next()?;
+                    let mut texture = object
+                        .texture
+                        .take()
+                        .unwrap_or_else(|| self.default_texture.clone());
+                    texture.normal = self.normal_body(texture.normal.take())?;
+                    object.texture = Some(texture);
                 }
                 "interior" => {
                     self.next()?;
@@ -413,7 +422,7 @@ impl Evaluator<'_> {
                     self.next()?;
                     self.optional_bool()?;
                 }
-                "normal" | "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
+                "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
                     self.unsupported_or_skip(&tok, &word)?
                 }
                 _ => return Err(self.stray_in_block(&tok, what)),
@@ -564,10 +573,12 @@ impl Evaluator<'_> {
                         }
                         self.next()?;
                     }
-                    Some(
-                        w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour"
-                        | "caustics" | "dispersion" | "dispersion_samples" | "media"),
-                    ) => {
+                    Some(w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour")) => {
+                        let w = w.to_string();
+                        self.next()?;
+                        self.interior_fade_item(&w, &mut interior)?;
+                    }
+                    Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
                         let w = w.to_string();
                         self.unsupported_or_skip(&tok, &w)?;
                     }

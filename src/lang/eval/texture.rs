@@ -8,91 +8,91 @@ use super::super::diagnostics::Diagnostic;
 use super::super::syntax::{Punct, TokenKind};
 use super::Evaluator;
 use super::value::{Value, colour_of};
-use crate::scene::{Colour, Finish, Pattern, Pigment, PigmentKind, Reflection, Texture};
+use crate::scene::{
+    Colour, Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
+    PigmentKind, Reflection, Texture, TextureMap, Transform, Turbulence, Warp, Wave,
+};
 
 type R<T> = Result<T, Diagnostic>;
 
 /// Pattern keywords POV-Ray has that penumbra does not model yet.
 const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "agate",
     "aoi",
     "average",
-    "boxed",
-    "bozo",
-    "brick",
-    "bumps",
     "cells",
     "crackle",
-    "cylindrical",
     "density_file",
-    "dents",
     "facets",
     "function",
-    "gradient",
-    "granite",
-    "hexagon",
-    "image_map",
     "image_pattern",
     "julia",
-    "leopard",
     "magnet",
     "mandel",
-    "marble",
-    "onion",
     "pavement",
-    "pigment_pattern",
-    "planar",
     "quilted",
-    "radial",
-    "ripples",
     "slope",
-    "spherical",
-    "spiral1",
-    "spiral2",
-    "spotted",
     "square",
     "tiling",
     "triangular",
-    "waves",
-    "wood",
-    "wrinkles",
-    "color_map",
-    "colour_map",
-    "pigment_map",
-    "turbulence",
-    "warp",
-    "frequency",
-    "phase",
-    "octaves",
-    "omega",
-    "lambda",
-    "ramp_wave",
-    "sine_wave",
-    "triangle_wave",
-    "scallop_wave",
-    "cubic_wave",
-    "poly_wave",
     "uv_mapping",
     "object",
+    "material_map",
+    "bump_map",
 ];
+
+/// Pattern keywords penumbra models.
+const PATTERNS: &[&str] = &[
+    "checker",
+    "hexagon",
+    "brick",
+    "gradient",
+    "onion",
+    "radial",
+    "spiral1",
+    "spiral2",
+    "leopard",
+    "marble",
+    "wood",
+    "agate",
+    "bozo",
+    "spotted",
+    "granite",
+    "wrinkles",
+    "bumps",
+    "dents",
+    "ripples",
+    "waves",
+    "planar",
+    "spherical",
+    "cylindrical",
+    "boxed",
+    "pigment_pattern",
+];
+
+/// What a pattern block holds while it is read: the pattern and where its modifiers go.
+enum Modified<'a> {
+    Pigment(&'a mut Pigment),
+    Normal(&'a mut Normal),
+    Texture(&'a mut Texture),
+}
 
 impl Evaluator<'_> {
     /// `{ ... }` after `pigment`.
     pub(super) fn pigment_body(&mut self, base: Pigment) -> R<Pigment> {
         let open = self.expect(Punct::LBrace, "after `pigment`")?;
         self.enter(open.span)?;
-        let r = self.pigment_items(base);
+        let r = self.pigment_items(base, Punct::RBrace);
         self.leave();
         let p = r?;
         self.expect(Punct::RBrace, "to close the pigment")?;
         Ok(p)
     }
 
-    fn pigment_items(&mut self, mut p: Pigment) -> R<Pigment> {
+    fn pigment_items(&mut self, mut p: Pigment, close: Punct) -> R<Pigment> {
         let mut first = true;
         loop {
             let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
+            if tok.is_punct(close) {
                 return Ok(p);
             }
             if let Some(t) = self.transform_modifier()? {
@@ -102,27 +102,53 @@ impl Evaluator<'_> {
             }
             let word = tok.ident().map(str::to_string);
             match word.as_deref() {
-                Some("checker") => {
+                Some(w) if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
-                    let mut entries = Vec::new();
-                    while entries.len() < 2 {
-                        match self.list_entry()? {
-                            Some(e) => entries.push(e),
-                            None => break,
+                    let kind = self.pattern_kind(w)?;
+                    let pattern = Pattern::new(kind);
+                    p = if let Some(n) = pattern.kind.list_size() {
+                        let entries = self.list_entries(n)?;
+                        Pigment {
+                            kind: PigmentKind::List { pattern, entries },
+                            transform: Transform::IDENTITY,
                         }
-                        self.eat(Punct::Comma)?;
+                    } else {
+                        Pigment {
+                            kind: PigmentKind::ColourMap {
+                                pattern,
+                                map: vec![(0.0, Colour::BLACK), (1.0, Colour::rgb(1.0, 1.0, 1.0))],
+                            },
+                            transform: Transform::IDENTITY,
+                        }
+                    };
+                }
+                Some("color_map" | "colour_map") => {
+                    self.next()?;
+                    let map = self.colour_map_body()?;
+                    let pattern = p
+                        .pattern_mut()
+                        .map(|x| x.clone())
+                        .unwrap_or_else(|| Pattern::new(PatternKind::Gradient(DVec3::X)));
+                    p.kind = PigmentKind::ColourMap { pattern, map };
+                }
+                Some("pigment_map") => {
+                    self.next()?;
+                    let mut map = self.pigment_map_body()?;
+                    let t = p.transform;
+                    for (_, e) in &mut map {
+                        e.transform_by(&t);
                     }
-                    // POV-Ray's defaults for a checker without entries: blue, then green.
-                    let defaults = [Colour::rgb(0.0, 0.0, 1.0), Colour::rgb(0.0, 1.0, 0.0)];
-                    for d in defaults.iter().skip(entries.len()) {
-                        entries.push(Pigment::solid(*d));
-                    }
+                    let pattern = p
+                        .pattern_mut()
+                        .map(|x| x.clone())
+                        .unwrap_or_else(|| Pattern::new(PatternKind::Gradient(DVec3::X)));
+                    p.kind = PigmentKind::PigmentMap { pattern, map };
+                }
+                Some("image_map") => {
+                    self.next()?;
                     p = Pigment {
-                        kind: PigmentKind::List {
-                            pattern: Pattern::Checker,
-                            entries,
-                        },
-                        transform: crate::scene::Transform::IDENTITY,
+                        kind: PigmentKind::Image(self.image_map_body()?),
+                        transform: Transform::IDENTITY,
                     };
                 }
                 Some("quick_color" | "quick_colour") => {
@@ -138,6 +164,9 @@ impl Evaluator<'_> {
                     }
                     self.next()?;
                 }
+                Some(w)
+                    if self.lookup(w).is_none()
+                        && self.pattern_modifier(Modified::Pigment(&mut p), w)? => {}
                 _ if first || self.starts_colour(&tok)? => {
                     let (c, _) = self.colour()?;
                     p = Pigment::solid(colour_of(c));
@@ -145,6 +174,404 @@ impl Evaluator<'_> {
                 _ => return Err(self.stray_in_block(&tok, "the pigment")),
             }
             first = false;
+        }
+    }
+
+    /// The parameters that follow a pattern keyword.
+    fn pattern_kind(&mut self, word: &str) -> R<PatternKind> {
+        Ok(match word {
+            "checker" => PatternKind::Checker,
+            "hexagon" => PatternKind::Hexagon,
+            "brick" => PatternKind::Brick {
+                size: DVec3::new(8.0, 3.0, 4.5),
+                mortar: 0.5,
+            },
+            // POV-Ray uses the direction only: `gradient <2,0,0>` repeats every unit.
+            "gradient" => PatternKind::Gradient(self.vector3()?.normalize_or_zero()),
+            "onion" => PatternKind::Onion,
+            "radial" => PatternKind::Radial,
+            "spiral1" => PatternKind::Spiral1(self.float()?),
+            "spiral2" => PatternKind::Spiral2(self.float()?),
+            "leopard" => PatternKind::Leopard,
+            "marble" => PatternKind::Marble,
+            "wood" => PatternKind::Wood,
+            "agate" => PatternKind::Agate { turbulence: 1.0 },
+            "bozo" => PatternKind::Bozo,
+            "spotted" => PatternKind::Spotted,
+            "granite" => PatternKind::Granite,
+            "wrinkles" => PatternKind::Wrinkles,
+            "bumps" => PatternKind::Bumps,
+            "dents" => PatternKind::Dents,
+            "ripples" => PatternKind::Ripples,
+            "waves" => PatternKind::Waves,
+            "planar" => PatternKind::Planar,
+            "spherical" => PatternKind::Spherical,
+            "cylindrical" => PatternKind::Cylindrical,
+            "boxed" => PatternKind::Boxed,
+            _ => {
+                // pigment_pattern
+                let pig = self.pigment_body_from_keyword()?;
+                PatternKind::PigmentPattern(Box::new(pig))
+            }
+        })
+    }
+
+    fn pigment_body_from_keyword(&mut self) -> R<Pigment> {
+        self.pigment_body(Pigment::default())
+    }
+
+    /// Up to `n` entries of a list pattern, with POV-Ray's defaults for missing ones.
+    fn list_entries(&mut self, n: usize) -> R<Vec<Pigment>> {
+        let mut entries = Vec::new();
+        while entries.len() < n {
+            match self.list_entry()? {
+                Some(e) => entries.push(e),
+                None => break,
+            }
+            self.eat(Punct::Comma)?;
+        }
+        // POV-Ray's defaults without entries: checker blue, green; hexagon blue, green,
+        // red; brick (mortar, brick) white, red.
+        let defaults: &[Colour] = match n {
+            3 => &[
+                Colour::rgb(0.0, 0.0, 1.0),
+                Colour::rgb(0.0, 1.0, 0.0),
+                Colour::rgb(1.0, 0.0, 0.0),
+            ],
+            _ => &[Colour::rgb(0.0, 0.0, 1.0), Colour::rgb(0.0, 1.0, 0.0)],
+        };
+        for d in defaults.iter().skip(entries.len()) {
+            entries.push(Pigment::solid(*d));
+        }
+        Ok(entries)
+    }
+
+    /// A pattern modifier (frequency, wave, turbulence, warp, brick size ...) applied to
+    /// the pattern being read; false when the word is none.
+    fn pattern_modifier(&mut self, target: Modified<'_>, word: &str) -> R<bool> {
+        const WORDS: &[&str] = &[
+            "frequency",
+            "phase",
+            "ramp_wave",
+            "sine_wave",
+            "triangle_wave",
+            "scallop_wave",
+            "cubic_wave",
+            "poly_wave",
+            "turbulence",
+            "octaves",
+            "omega",
+            "lambda",
+            "warp",
+            "noise_generator",
+            "brick_size",
+            "mortar",
+            "agate_turb",
+        ];
+        if !WORDS.contains(&word) {
+            return Ok(false);
+        }
+        let tok = self.next()?;
+        let (pattern, transform) = match target {
+            Modified::Pigment(p) => {
+                let t = &mut p.transform;
+                match &mut p.kind {
+                    PigmentKind::Solid(_) | PigmentKind::Image(_) => (None, t),
+                    PigmentKind::List { pattern, .. }
+                    | PigmentKind::ColourMap { pattern, .. }
+                    | PigmentKind::PigmentMap { pattern, .. } => (Some(pattern), t),
+                }
+            }
+            Modified::Normal(n) => (Some(&mut n.pattern), &mut n.transform),
+            Modified::Texture(t) => match &mut t.map {
+                Some(m) => (Some(&mut m.pattern), &mut m.transform),
+                None => {
+                    return Err(self.err(tok.span, format!("`{word}` needs a pattern before it")));
+                }
+            },
+        };
+        let mut scratch = Pattern::new(PatternKind::Bozo);
+        let pattern = pattern.unwrap_or(&mut scratch);
+        match word {
+            "frequency" => pattern.frequency = self.float()?,
+            "phase" => pattern.phase = self.float()?,
+            "ramp_wave" => pattern.wave = Wave::Ramp,
+            "sine_wave" => pattern.wave = Wave::Sine,
+            "triangle_wave" => pattern.wave = Wave::Triangle,
+            "scallop_wave" => pattern.wave = Wave::Scallop,
+            "cubic_wave" => pattern.wave = Wave::Cubic,
+            "poly_wave" => {
+                let e = if self.starts_float()? {
+                    self.float()?
+                } else {
+                    1.0
+                };
+                pattern.wave = Wave::Poly(e);
+            }
+            "turbulence" => {
+                let (v, s) = self.expr()?;
+                let amount = self.to_vec3(&v, s)?;
+                pattern
+                    .turbulence
+                    .get_or_insert_with(Turbulence::default)
+                    .amount = amount;
+            }
+            "octaves" => {
+                let o = self.float()?;
+                pattern
+                    .turbulence
+                    .get_or_insert_with(Turbulence::default)
+                    .octaves = o.clamp(1.0, 10.0) as u32;
+            }
+            "omega" => {
+                pattern
+                    .turbulence
+                    .get_or_insert_with(Turbulence::default)
+                    .omega = self.float()?
+            }
+            "lambda" => {
+                pattern
+                    .turbulence
+                    .get_or_insert_with(Turbulence::default)
+                    .lambda = self.float()?
+            }
+            "noise_generator" => pattern.noise_generator = self.float()?.clamp(1.0, 3.0) as u8,
+            "brick_size" => {
+                let v = self.vector3()?;
+                if let PatternKind::Brick { size, .. } = &mut pattern.kind {
+                    *size = v;
+                }
+            }
+            "mortar" => {
+                let m = self.float()?;
+                if let PatternKind::Brick { mortar, .. } = &mut pattern.kind {
+                    *mortar = m;
+                }
+            }
+            "agate_turb" => {
+                let a = self.float()?;
+                if let PatternKind::Agate { turbulence } = &mut pattern.kind {
+                    *turbulence = a;
+                }
+            }
+            _ => {
+                // warp { turbulence ... }: transforms written before it are warped with
+                // the pattern, so they move into the warp chain.
+                let warp = self.warp_block()?;
+                if let Some(w) = warp {
+                    if !transform.is_identity() {
+                        pattern.warps.push(Warp::Transform(*transform));
+                        *transform = Transform::IDENTITY;
+                    }
+                    pattern.warps.push(w);
+                }
+            }
+        }
+        Ok(true)
+    }
+
+    /// `warp { turbulence v octaves n omega w lambda l }`; other warps are unsupported.
+    fn warp_block(&mut self) -> R<Option<Warp>> {
+        let open = self.expect(Punct::LBrace, "after `warp`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Option<Warp>> {
+            let mut t = Turbulence::default();
+            let mut any = false;
+            loop {
+                let tok = self.peek()?;
+                if tok.is_punct(Punct::RBrace) {
+                    return Ok(any.then_some(Warp::Turbulence(t)));
+                }
+                match tok.ident() {
+                    Some("turbulence") => {
+                        self.next()?;
+                        let (v, s) = self.expr()?;
+                        t.amount = self.to_vec3(&v, s)?;
+                        any = true;
+                    }
+                    Some("octaves") => {
+                        self.next()?;
+                        t.octaves = self.float()?.clamp(1.0, 10.0) as u32;
+                    }
+                    Some("omega") => {
+                        self.next()?;
+                        t.omega = self.float()?;
+                    }
+                    Some("lambda") => {
+                        self.next()?;
+                        t.lambda = self.float()?;
+                    }
+                    Some(w) => {
+                        let w = w.to_string();
+                        return Err(self.unsupported(&tok, &format!("warp {{ {w} }}")));
+                    }
+                    None => return Err(self.stray_in_block(&tok, "the warp")),
+                }
+            }
+        })();
+        self.leave();
+        let w = r?;
+        self.expect(Punct::RBrace, "to close the warp")?;
+        Ok(w)
+    }
+
+    /// `{ [v colour] ... }` after `color_map`; entries sorted by value as POV-Ray keeps them.
+    fn colour_map_body(&mut self) -> R<Vec<(f64, Colour)>> {
+        let open = self.expect(Punct::LBrace, "after `color_map`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<(f64, Colour)>> {
+            let mut map = Vec::new();
+            // `color_map { Declared }`: a map declared earlier (kept as a pigment).
+            if let Some(Value::Pigment(named)) =
+                self.peek()?.ident().and_then(|w| self.lookup(w)).cloned()
+                && let PigmentKind::ColourMap { map: m, .. } = named.kind
+            {
+                self.next()?;
+                map = m;
+            }
+            while self.eat(Punct::LBracket)? {
+                let v = self.float()?;
+                self.eat(Punct::Comma)?;
+                // The old form `[a, b colour c colour d]`: a second value before the colours.
+                if self.starts_float()? {
+                    let v2 = self.float()?;
+                    let (c1, _) = self.colour()?;
+                    self.eat(Punct::Comma)?;
+                    let (c2, _) = self.colour()?;
+                    map.push((v, colour_of(c1)));
+                    map.push((v2, colour_of(c2)));
+                } else {
+                    let (c, _) = self.colour()?;
+                    map.push((v, colour_of(c)));
+                }
+                self.expect(Punct::RBracket, "to close the colour map entry")?;
+            }
+            Ok(map)
+        })();
+        self.leave();
+        let map = r?;
+        self.expect(Punct::RBrace, "to close the colour map")?;
+        Ok(map)
+    }
+
+    /// `{ [v pigment {...}] ... }` after `pigment_map`.
+    fn pigment_map_body(&mut self) -> R<Vec<(f64, Pigment)>> {
+        let open = self.expect(Punct::LBrace, "after `pigment_map`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<(f64, Pigment)>> {
+            let mut map = Vec::new();
+            while self.eat(Punct::LBracket)? {
+                let v = self.float()?;
+                self.eat(Punct::Comma)?;
+                // Entries are pigment bodies: `[0.5 checker rgb 1, rgb 0]`, `[1 Named]`.
+                let p = if self.peek()?.is_ident("pigment") {
+                    self.list_entry()?.unwrap_or_default()
+                } else {
+                    self.pigment_items(Pigment::default(), Punct::RBracket)?
+                };
+                map.push((v, p));
+                self.expect(Punct::RBracket, "to close the pigment map entry")?;
+            }
+            Ok(map)
+        })();
+        self.leave();
+        let map = r?;
+        self.expect(Punct::RBrace, "to close the pigment map")?;
+        Ok(map)
+    }
+
+    /// `{ [v texture {...}] ... }` after `texture_map`.
+    fn texture_map_body(&mut self) -> R<Vec<(f64, Texture)>> {
+        let open = self.expect(Punct::LBrace, "after `texture_map`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<(f64, Texture)>> {
+            let mut map = Vec::new();
+            while self.eat(Punct::LBracket)? {
+                let v = self.float()?;
+                self.eat(Punct::Comma)?;
+                // Entries are texture bodies: `[0.5 T_Named]`, `[1 pigment {...} finish {...}]`.
+                let t = if self.peek()?.is_ident("texture") {
+                    self.next()?;
+                    self.texture_body(self.default_texture.clone())?
+                } else {
+                    self.texture_items(self.default_texture.clone(), Punct::RBracket)?
+                };
+                map.push((v, t));
+                self.expect(Punct::RBracket, "to close the texture map entry")?;
+            }
+            Ok(map)
+        })();
+        self.leave();
+        let map = r?;
+        self.expect(Punct::RBrace, "to close the texture map")?;
+        Ok(map)
+    }
+
+    /// `{ ... }` after `normal`.
+    pub(super) fn normal_body(&mut self, base: Option<Normal>) -> R<Option<Normal>> {
+        let open = self.expect(Punct::LBrace, "after `normal`")?;
+        self.enter(open.span)?;
+        let r = self.normal_items(base);
+        self.leave();
+        let n = r?;
+        self.expect(Punct::RBrace, "to close the normal")?;
+        Ok(n)
+    }
+
+    fn normal_items(&mut self, mut n: Option<Normal>) -> R<Option<Normal>> {
+        loop {
+            let tok = self.peek()?;
+            if tok.is_punct(Punct::RBrace) {
+                return Ok(n);
+            }
+            if let Some(t) = self.transform_modifier()? {
+                if let Some(n) = &mut n {
+                    n.transform_by(&t);
+                }
+                continue;
+            }
+            let Some(word) = tok.ident().map(str::to_string) else {
+                return Err(self.stray_in_block(&tok, "the normal"));
+            };
+            match word.as_str() {
+                w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
+                    self.next()?;
+                    let kind = self.pattern_kind(w)?;
+                    let mut normal = Normal::new(Pattern::new(kind));
+                    // The amount follows the pattern, after a comma when the pattern took a
+                    // vector or a number.
+                    self.eat(Punct::Comma)?;
+                    if self.starts_float()? {
+                        normal.amount = self.float()?;
+                    }
+                    n = Some(normal);
+                }
+                "bump_size" => {
+                    self.next()?;
+                    let a = self.float()?;
+                    if let Some(n) = &mut n {
+                        n.amount = a;
+                    }
+                }
+                "accuracy" => {
+                    self.next()?;
+                    let a = self.float()?;
+                    if let Some(n) = &mut n {
+                        n.accuracy = a;
+                    }
+                }
+                w if UNSUPPORTED_PATTERNS.contains(&w) || w == "normal_map" || w == "slope_map" => {
+                    return Err(self.unsupported(&tok, w));
+                }
+                w => {
+                    if let Some(normal) = &mut n
+                        && self.pattern_modifier(Modified::Normal(normal), w)?
+                    {
+                        continue;
+                    }
+                    return Err(self.stray_in_block(&tok, "the normal"));
+                }
+            }
         }
     }
 
@@ -225,12 +652,8 @@ impl Evaluator<'_> {
                         diffuse_albedo = None;
                         f.diffuse = d;
                     }
-                    if self.peek()?.is_punct(Punct::Comma) {
-                        let comma = self.next()?;
-                        return Err(self.err(
-                            comma.span,
-                            "unsupported: a backside `diffuse` value is not supported yet",
-                        ));
+                    if self.eat(Punct::Comma)? {
+                        f.diffuse_back = self.float()?;
                     }
                 }
                 "brilliance" => f.brilliance = self.float()?,
@@ -288,8 +711,10 @@ impl Evaluator<'_> {
                     f.reflection.exponent = e;
                 }
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
-                "crand" | "irid" | "ior" | "subsurface" | "caustics" | "fade_distance"
-                | "fade_power" | "refraction" | "fresnel" => {
+                "crand" => f.crand = self.float()?,
+                "fresnel" => f.fresnel = self.optional_bool()?,
+                "irid" | "ior" | "subsurface" | "caustics" | "fade_distance" | "fade_power"
+                | "refraction" => {
                     return Err(self.unsupported(&tok, &word));
                 }
                 _ => return Err(self.stray_in_block(&tok, "the finish")),
@@ -374,17 +799,17 @@ impl Evaluator<'_> {
     pub(super) fn texture_body(&mut self, base: Texture) -> R<Texture> {
         let open = self.expect(Punct::LBrace, "after `texture`")?;
         self.enter(open.span)?;
-        let r = self.texture_items(base);
+        let r = self.texture_items(base, Punct::RBrace);
         self.leave();
         let t = r?;
         self.expect(Punct::RBrace, "to close the texture")?;
         Ok(t)
     }
 
-    fn texture_items(&mut self, mut t: Texture) -> R<Texture> {
+    fn texture_items(&mut self, mut t: Texture, close: Punct) -> R<Texture> {
         loop {
             let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
+            if tok.is_punct(close) {
                 return Ok(t);
             }
             if let Some(tr) = self.transform_modifier()? {
@@ -403,9 +828,33 @@ impl Evaluator<'_> {
                     self.next()?;
                     t.finish = self.finish_body(t.finish)?;
                 }
-                "normal" | "material_map" | "texture_map" | "image_map" | "uv_mapping" => {
+                "normal" => {
+                    self.next()?;
+                    t.normal = self.normal_body(t.normal.take())?;
+                }
+                "texture_map" => {
+                    self.next()?;
+                    let entries = self.texture_map_body()?;
+                    let Some(map) = &mut t.map else {
+                        return Err(self.err(tok.span, "`texture_map` needs a pattern before it"));
+                    };
+                    map.entries = entries;
+                }
+                w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
+                    self.next()?;
+                    let kind = self.pattern_kind(w)?;
+                    t.map = Some(Box::new(TextureMap {
+                        pattern: Pattern::new(kind),
+                        transform: Transform::IDENTITY,
+                        entries: Vec::new(),
+                    }));
+                }
+                "material_map" | "image_map" | "uv_mapping" => {
                     return Err(self.unsupported(&tok, &word));
                 }
+                w if t.map.is_some()
+                    && self.lookup(w).is_none()
+                    && self.pattern_modifier(Modified::Texture(&mut t), w)? => {}
                 _ => match self.lookup(&word).cloned() {
                     Some(Value::Texture(named)) => {
                         self.next()?;
@@ -418,5 +867,177 @@ impl Evaluator<'_> {
                 },
             }
         }
+    }
+}
+
+impl Evaluator<'_> {
+    /// Interior items penumbra's appearance model owns (the fade of light inside).
+    pub(super) fn interior_fade_item(&mut self, word: &str, interior: &mut Interior) -> R<()> {
+        match word {
+            "fade_distance" => interior.fade_distance = self.float()?,
+            "fade_power" => interior.fade_power = self.float()?,
+            _ => interior.fade_colour = self.colour_or_float()?,
+        }
+        Ok(())
+    }
+
+    /// A second `texture` on an object goes on top of the ones before it.
+    pub(super) fn layer_texture(below: Option<Texture>, mut top: Texture) -> Texture {
+        if let Some(mut b) = below {
+            let rest = std::mem::take(&mut b.below);
+            top.below.push(b);
+            top.below.extend(rest);
+        }
+        top
+    }
+}
+
+impl Evaluator<'_> {
+    /// `{ png "file" ... }` after `image_map`; the file is found like an include file.
+    fn image_map_body(&mut self) -> R<ImageMap> {
+        let open = self.expect(Punct::LBrace, "after `image_map`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<ImageMap> {
+            let tok = self.peek()?;
+            match tok.ident() {
+                Some("png") => {
+                    self.next()?;
+                }
+                Some(
+                    w @ ("gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "hdr"
+                    | "exr" | "bmp"),
+                ) => {
+                    let w = w.to_string();
+                    return Err(self.unsupported(&tok, &format!("{w} images")));
+                }
+                _ => {}
+            }
+            let (v, span) = self.expr()?;
+            let Value::Str(name) = v else {
+                return Err(self.err(span, "expected the image file name as a string"));
+            };
+            let Some(path) = self.resolve_include(&name) else {
+                return Err(self.err(span, format!("cannot find the image \"{name}\"")));
+            };
+            let image = load_png(&path).map_err(|e| self.err(span, e))?;
+            let mut im = ImageMap {
+                image: std::sync::Arc::new(image),
+                map_type: MapType::Planar,
+                bilinear: false,
+                once: false,
+                filter_all: 0.0,
+                transmit_all: 0.0,
+            };
+            loop {
+                let tok = self.peek()?;
+                if tok.is_punct(Punct::RBrace) {
+                    return Ok(im);
+                }
+                match tok.ident() {
+                    Some("map_type") => {
+                        self.next()?;
+                        let (m, s) = self.expr()?;
+                        im.map_type = match self.to_float(&m, s)? as i64 {
+                            0 => MapType::Planar,
+                            1 => MapType::Spherical,
+                            2 => MapType::Cylindrical,
+                            _ => {
+                                return Err(self.unsupported(&tok, "map_type other than 0, 1, 2"));
+                            }
+                        };
+                    }
+                    Some("interpolate") => {
+                        self.next()?;
+                        // 2 (bilinear) and 4 (normalised distance) both blend neighbours;
+                        // penumbra does bilinear for any non-zero value.
+                        im.bilinear = self.float()? != 0.0;
+                    }
+                    Some("once") => {
+                        self.next()?;
+                        im.once = true;
+                    }
+                    Some(w @ ("filter" | "transmit")) => {
+                        let w = w.to_string();
+                        self.next()?;
+                        if !self.eat_ident("all")? {
+                            let t = self.peek()?;
+                            return Err(self.unsupported(&t, &format!("{w} of one palette entry")));
+                        }
+                        let f = self.float()?;
+                        if w == "filter" {
+                            im.filter_all = f;
+                        } else {
+                            im.transmit_all = f;
+                        }
+                    }
+                    Some("gamma") => {
+                        let t = tok.clone();
+                        return Err(self.unsupported(&t, "image gamma"));
+                    }
+                    _ => return Err(self.stray_in_block(&tok, "the image map")),
+                }
+            }
+        })();
+        self.leave();
+        let im = r?;
+        self.expect(Punct::RBrace, "to close the image map")?;
+        Ok(im)
+    }
+}
+
+/// Reads a PNG into linear colours: 8- and 16-bit files without a gAMA chunk are sRGB, as
+/// POV-Ray 3.7 assumes (measured: grey 128 renders as 0.2158); alpha becomes transmit.
+fn load_png(path: &std::path::Path) -> Result<ImageData, String> {
+    let img = image::open(path).map_err(|e| format!("cannot read \"{}\": {e}", path.display()))?;
+    let rgba = img.to_rgba32f();
+    let (w, h) = (rgba.width() as usize, rgba.height() as usize);
+    let decode = |c: f32| {
+        let c = c as f64;
+        if c <= 0.04045 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let pixels = rgba
+        .pixels()
+        .map(|p| Colour {
+            rgb: DVec3::new(decode(p[0]), decode(p[1]), decode(p[2])),
+            filter: 0.0,
+            transmit: 1.0 - p[3] as f64,
+        })
+        .collect();
+    Ok(ImageData {
+        width: w,
+        height: h,
+        pixels,
+    })
+}
+
+impl Evaluator<'_> {
+    /// `#declare M = color_map { ... }`: kept as a gradient pigment with that map, since the
+    /// value types have no colour map of their own; `color_map { M }` takes the map back.
+    pub(super) fn declared_colour_map(&mut self) -> R<Pigment> {
+        let map = self.colour_map_body()?;
+        Ok(Pigment {
+            kind: PigmentKind::ColourMap {
+                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                map,
+            },
+            transform: Transform::IDENTITY,
+        })
+    }
+}
+
+impl Evaluator<'_> {
+    /// `#declare T = texture {A} texture {B}`: a layered texture, B on top. Looks ahead
+    /// without running directives, since the declaration is not finished.
+    pub(super) fn more_layers(&mut self, mut t: Texture) -> R<Texture> {
+        while self.raw_peek(0).is_some_and(|tok| tok.is_ident("texture")) {
+            self.raw_next();
+            let top = self.texture_body(self.default_texture.clone())?;
+            t = Self::layer_texture(Some(t), top);
+        }
+        Ok(t)
     }
 }
