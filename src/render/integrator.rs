@@ -11,7 +11,7 @@ use glam::DVec3;
 use crate::appearance::finish::{
     diffuse_factor, metallic_tint, phong_factor, reflectivity, specular_factor,
 };
-use crate::appearance::{perturbed_normal, texture_layers};
+use crate::appearance::{evaluate_pigment, perturbed_normal, texture_layers};
 use crate::geometry::{Ray, SurfacePoint, flags, offset_point};
 use crate::scene::{Colour, Finish};
 
@@ -186,15 +186,16 @@ impl<'a> Integrator<'a> {
     ) -> DVec3 {
         let scene = self.scene;
         let Some(hit) = scene.world.intersect(ray, f64::INFINITY, path.skip) else {
-            return scene.background.rgb;
+            return self.sky(ray.direction);
         };
         let surface = scene.world.surface(ray, &hit);
         let material = &scene.materials[surface.material as usize];
         let d = ray.direction.normalize();
         let leaving = surface.normal.dot(d) > 0.0;
         let mut colour = self.shade(d, &surface, material, path, leaving, sampler, counts);
-        if leaving && material.fade_power > 0.0 && material.fade_distance > 0.0 {
-            // The ray crossed this object's interior to get here.
+        if leaving && material.fade_distance > 0.0 {
+            // The ray crossed this object's interior to get here. (POV-Ray fades these rays
+            // even at fade_power 0, by a half, but not its shadow rays: measured.)
             let distance = hit.t * ray.direction.length();
             colour *= fade(material, distance);
         }
@@ -373,6 +374,23 @@ impl<'a> Integrator<'a> {
         colour
     }
 
+    /// What a ray that leaves the scene sees: the sky sphere's pigments, layered over the
+    /// background through their filter and transmit.
+    fn sky(&self, direction: DVec3) -> DVec3 {
+        let scene = self.scene;
+        let Some(sky) = &scene.sky_sphere else {
+            return scene.background.rgb;
+        };
+        let d = direction.normalize_or(DVec3::Z);
+        let mut colour = scene.background.rgb;
+        for pigment in &sky.pigments {
+            let c = evaluate_pigment(pigment, d);
+            let att = c.opacity(scene.legacy);
+            colour = c.rgb * att * sky.emission + colour * (c.rgb * c.filter + DVec3::splat(c.transmit));
+        }
+        colour
+    }
+
     /// Roulette's survival probability for a branch of this weight (1 when roulette is off,
     /// the weight is large, or the branch enters non-linearly).
     fn survival(&self, weight: f64, linear: bool) -> f64 {
@@ -542,6 +560,9 @@ impl<'a> Integrator<'a> {
             };
         }
         let mut filter = DVec3::ONE;
+        // Crossings of fading interiors, kept to measure the distance travelled inside.
+        let mut fading = [(0.0f64, 0u32, false); MAX_FADING_CROSSINGS];
+        let mut fading_len = 0;
         scene.world.shadow_hits(ray, t_max, |hit| {
             let primitive = scene.world.primitive_material(hit.primitive);
             let material = &scene.materials[primitive as usize];
@@ -553,11 +574,39 @@ impl<'a> Integrator<'a> {
                 let c = layer.colour;
                 filter *= c.rgb * c.filter + DVec3::splat(c.transmit);
             }
+            if material.fade_power > 0.0 && material.fade_distance > 0.0 && fading_len < fading.len() {
+                let leaving = scene.world.surface(ray, hit).normal.dot(ray.direction) > 0.0;
+                fading[fading_len] = (hit.t, hit.primitive, leaving);
+                fading_len += 1;
+            }
             filter != DVec3::ZERO
         });
+        if fading_len > 0 && filter != DVec3::ZERO {
+            // POV-Ray fades shadow rays through an interior as it fades the rays that see
+            // through it: over each stretch from entering to leaving the object.
+            let crossings = &mut fading[..fading_len];
+            crossings.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let speed = ray.direction.length();
+            for i in 0..crossings.len() {
+                let (t, primitive, leaving) = crossings[i];
+                if !leaving {
+                    continue;
+                }
+                let entry = crossings[..i]
+                    .iter()
+                    .rev()
+                    .find(|c| c.1 == primitive && !c.2)
+                    .map_or(0.0, |c| c.0);
+                let material = &scene.materials[scene.world.primitive_material(primitive) as usize];
+                filter *= fade(material, (t - entry) * speed);
+            }
+        }
         filter
     }
 }
+
+/// Fading interiors a shadow ray keeps track of; past this many, further ones do not fade.
+const MAX_FADING_CROSSINGS: usize = 16;
 
 /// Unpolarised Fresnel reflectance with relative index n and cos c of the incidence angle;
 /// 1 under total internal reflection.

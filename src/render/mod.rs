@@ -105,6 +105,10 @@ impl std::error::Error for RenderError {}
 /// same screen point meets the others on the plane through the focal point, perpendicular
 /// to the viewing direction.
 pub fn camera_ray(camera: &Camera, x: f64, y: f64, lens: (f64, f64)) -> Ray {
+    if camera.orthographic {
+        let origin = camera.location + camera.right * x + camera.up * y;
+        return Ray::new(origin, camera.direction.normalize_or(DVec3::Z));
+    }
     let dir = camera.direction + camera.right * x + camera.up * y;
     if camera.aperture <= 0.0 {
         return Ray::new(camera.location, dir.normalize_or(DVec3::Z));

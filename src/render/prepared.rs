@@ -9,7 +9,8 @@ use crate::geometry::{
     CsgOp, Item, PolygonData, ShapeKind, Transform, TriangleData, World, WorldBuilder, flags,
 };
 use crate::scene::{
-    Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, Texture,
+    Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere,
+    Texture,
 };
 
 use super::lights::PreparedLight;
@@ -33,6 +34,7 @@ pub struct PreparedScene {
     pub lights: Vec<PreparedLight>,
     pub camera: Camera,
     pub background: Colour,
+    pub sky_sphere: Option<SkySphere>,
     pub settings: GlobalSettings,
     pub legacy: bool,
     /// Pre-3.7 scenes without `assumed_gamma` are computed in display-gamma space; POV-Ray
@@ -67,6 +69,7 @@ impl PreparedScene {
             lights: scene.lights.iter().map(PreparedLight::new).collect(),
             camera: scene.camera.clone(),
             background: scene.background,
+            sky_sphere: scene.sky_sphere.clone(),
             settings: scene.settings.clone(),
             legacy: scene.legacy(),
             legacy_gamma: scene.legacy() && scene.settings.assumed_gamma.is_none(),

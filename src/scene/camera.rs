@@ -13,6 +13,8 @@ pub struct Camera {
     /// Focal blur: lens diameter (0: a pinhole) and the point that is in focus.
     pub aperture: f64,
     pub focal_point: DVec3,
+    /// Parallel rays along `direction` from points of the `right` x `up` rectangle.
+    pub orthographic: bool,
 }
 
 impl Default for Camera {
@@ -38,6 +40,7 @@ pub struct CameraSpec {
     pub focal_point: DVec3,
     /// POV-Ray's rays per pixel for blur; penumbra's lens samples are the pixel's samples.
     pub blur_samples: u32,
+    pub orthographic: bool,
     pub transform: Transform,
 }
 
@@ -54,6 +57,7 @@ impl Default for CameraSpec {
             aperture: 0.0,
             focal_point: DVec3::ZERO,
             blur_samples: 0,
+            orthographic: false,
             transform: Transform::IDENTITY,
         }
     }
@@ -94,6 +98,7 @@ impl CameraSpec {
             up: t.vector(up),
             aperture: self.aperture,
             focal_point: t.point(self.focal_point),
+            orthographic: self.orthographic,
         }
     }
 }

@@ -54,6 +54,14 @@ impl Colour {
     }
 }
 
+/// `sky_sphere { pigment {...} ... }`: pigments evaluated at the direction of a ray that
+/// leaves the scene, the first listed at the bottom.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SkySphere {
+    pub pigments: Vec<Pigment>,
+    pub emission: DVec3,
+}
+
 /// Settings from `global_settings`, with POV-Ray's defaults.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GlobalSettings {
@@ -83,6 +91,8 @@ pub struct Scene {
     pub lights: Vec<Light>,
     pub objects: Vec<Object>,
     pub background: Colour,
+    /// Seen by rays that hit nothing, by direction, over the background.
+    pub sky_sphere: Option<SkySphere>,
     pub settings: GlobalSettings,
     /// The `#version` in force at the end of parsing; below 3.7 some formulas differ.
     pub version: f64,
@@ -95,6 +105,7 @@ impl Default for Scene {
             lights: Vec::new(),
             objects: Vec::new(),
             background: Colour::BLACK,
+            sky_sphere: None,
             settings: GlobalSettings::default(),
             version: 3.7,
         }

@@ -13,7 +13,6 @@ type R<T> = Result<T, Diagnostic>;
 
 /// Features POV-Ray has at the top level that penumbra does not model yet.
 const UNSUPPORTED_ITEMS: &[&str] = &[
-    "sky_sphere",
     "fog",
     "rainbow",
     "media",
@@ -39,6 +38,10 @@ impl Evaluator<'_> {
                 self.block_end(open, "the background")?;
             }
             "global_settings" => self.global_settings()?,
+            "sky_sphere" => {
+                let sky = self.sky_sphere()?;
+                self.scene.sky_sphere = Some(sky);
+            }
             // POV-Ray still reads the old form of `#default` without the `#`.
             "default" => {
                 self.next()?;
@@ -191,6 +194,43 @@ impl Evaluator<'_> {
         self.expected(&format!("`}}` to close {what}"), tok)
     }
 
+    fn sky_sphere(&mut self) -> R<crate::scene::SkySphere> {
+        let open = self.block_start("sky_sphere")?;
+        let mut sky = crate::scene::SkySphere {
+            pigments: Vec::new(),
+            emission: DVec3::ONE,
+        };
+        loop {
+            let tok = self.peek()?;
+            if tok.is_punct(Punct::RBrace) {
+                break;
+            }
+            match tok.ident() {
+                Some("pigment") => {
+                    self.next()?;
+                    let p = self.pigment_body(crate::scene::Pigment::default())?;
+                    sky.pigments.push(p);
+                }
+                Some("emission") => {
+                    self.next()?;
+                    let (c, _) = self.colour()?;
+                    sky.emission = DVec3::new(c[0], c[1], c[2]);
+                }
+                _ => {
+                    if let Some(t) = self.transform_modifier()? {
+                        for p in &mut sky.pigments {
+                            p.transform_by(&t);
+                        }
+                        continue;
+                    }
+                    return Err(self.stray_in_block(&tok, "the sky_sphere"));
+                }
+            }
+        }
+        self.block_end(open, "the sky_sphere")?;
+        Ok(sky)
+    }
+
     fn camera_block(&mut self) -> R<CameraSpec> {
         let open = self.block_start("camera")?;
         let mut spec = CameraSpec::default();
@@ -205,6 +245,11 @@ impl Evaluator<'_> {
             match word {
                 "perspective" => {
                     self.next()?;
+                    spec.orthographic = false;
+                }
+                "orthographic" => {
+                    self.next()?;
+                    spec.orthographic = true;
                 }
                 "location" | "look_at" | "right" | "up" | "direction" | "sky" => {
                     let word = word.to_string();
@@ -245,7 +290,7 @@ impl Evaluator<'_> {
                     self.next()?;
                     self.float()?;
                 }
-                "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
+                "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
                 | "spherical" | "cylinder" | "mesh_camera" | "normal" => {
                     let word = word.to_string();
                     self.unsupported_or_skip(&tok, &word)?;
