@@ -164,12 +164,11 @@ impl<'a> Integrator<'a> {
             media: Media::OUTSIDE,
         };
         let l = self.trace(ray, path, sampler, counts);
-        if self.scene.legacy_gamma {
+        match self.scene.legacy_gamma {
             // Per sample, as POV-Ray decodes each traced ray; where the estimate is noisy
             // (area lights) the curve's bend adds a small bias (docs/differences.md).
-            l.map(|c| crate::output::srgb::decode(c.max(0.0)))
-        } else {
-            l
+            Some(g) => l.map(|c| g.decode(c)),
+            None => l,
         }
     }
 

@@ -15,6 +15,23 @@ use crate::scene::{
 
 use super::lights::PreparedLight;
 
+/// How a pre-3.7 scene's traced values become linear light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LegacyGamma {
+    Srgb,
+    Power(f64),
+}
+
+impl LegacyGamma {
+    pub fn decode(self, c: f64) -> f64 {
+        let c = c.max(0.0);
+        match self {
+            LegacyGamma::Srgb => crate::output::srgb::decode(c),
+            LegacyGamma::Power(g) => c.powf(g),
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct Material {
     pub texture: Texture,
@@ -37,9 +54,10 @@ pub struct PreparedScene {
     pub sky_sphere: Option<SkySphere>,
     pub settings: GlobalSettings,
     pub legacy: bool,
-    /// Pre-3.7 scenes without `assumed_gamma` are computed in display-gamma space; POV-Ray
-    /// 3.7 then writes linear files by decoding each traced value with the sRGB curve.
-    pub legacy_gamma: bool,
+    /// Pre-3.7 scenes are computed in display-gamma space; POV-Ray 3.7 then writes linear
+    /// files by decoding each traced value: with the sRGB curve when the scene gives no
+    /// `assumed_gamma`, else with that power (measured).
+    pub legacy_gamma: Option<LegacyGamma>,
     /// Whether any material lets light through: if none does, shadow rays only ask
     /// whether anything is in the way.
     pub any_transmitting: bool,
@@ -72,7 +90,12 @@ impl PreparedScene {
             sky_sphere: scene.sky_sphere.clone(),
             settings: scene.settings.clone(),
             legacy: scene.legacy(),
-            legacy_gamma: scene.legacy() && scene.settings.assumed_gamma.is_none(),
+            legacy_gamma: match (scene.legacy(), scene.settings.assumed_gamma) {
+                (false, _) => None,
+                (true, None) => Some(LegacyGamma::Srgb),
+                (true, Some(g)) if (g - 1.0).abs() > 1e-9 && g > 0.0 => Some(LegacyGamma::Power(g)),
+                (true, Some(_)) => None,
+            },
         }
     }
 }

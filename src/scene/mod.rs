@@ -118,3 +118,51 @@ impl Scene {
         self.version < 3.7 - 1e-9
     }
 }
+
+impl Scene {
+    /// `assumed_gamma g` (g != 1) in a 3.7 scene says its colours are written gamma-encoded:
+    /// POV-Ray decodes every colour (c^g per channel; filter and transmit stay) before
+    /// rendering in linear light. Image maps are decoded when read and are left alone.
+    pub fn decode_colours(&mut self, gamma: f64) {
+        let decode = |c: &mut Colour| c.rgb = c.rgb.max(DVec3::ZERO).powf(gamma);
+        fn pigment(p: &mut Pigment, decode: &dyn Fn(&mut Colour)) {
+            match &mut p.kind {
+                PigmentKind::Solid(c) => decode(c),
+                PigmentKind::List { entries, .. } => {
+                    entries.iter_mut().for_each(|e| pigment(e, decode))
+                }
+                PigmentKind::ColourMap { map, .. } => map.iter_mut().for_each(|(_, c)| decode(c)),
+                PigmentKind::PigmentMap { map, .. } => {
+                    map.iter_mut().for_each(|(_, p)| pigment(p, decode))
+                }
+                PigmentKind::Image(_) => {}
+            }
+        }
+        fn texture(t: &mut Texture, decode: &dyn Fn(&mut Colour)) {
+            pigment(&mut t.pigment, decode);
+            t.below.iter_mut().for_each(|b| texture(b, decode));
+            if let Some(map) = &mut t.map {
+                map.entries.iter_mut().for_each(|(_, t)| texture(t, decode));
+            }
+        }
+        fn object(o: &mut Object, decode: &dyn Fn(&mut Colour)) {
+            if let Some(t) = &mut o.texture {
+                texture(t, decode);
+            }
+            if let Some(children) = o.shape.children_mut() {
+                children.iter_mut().for_each(|c| object(c, decode));
+            }
+        }
+        self.objects.iter_mut().for_each(|o| object(o, &decode));
+        for light in &mut self.lights {
+            light.colour = light.colour.max(DVec3::ZERO).powf(gamma);
+            if let Some(o) = &mut light.looks_like {
+                object(o, &decode);
+            }
+        }
+        decode(&mut self.background);
+        if let Some(sky) = &mut self.sky_sphere {
+            sky.pigments.iter_mut().for_each(|p| pigment(p, &decode));
+        }
+    }
+}
