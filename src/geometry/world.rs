@@ -202,6 +202,24 @@ impl World {
         self.primitives.len()
     }
 
+    /// Bytes held by the geometry's arrays (primitives, transforms, shape tables' headers,
+    /// CSG nodes, BVH nodes and item list), for the benchmark's memory per object.
+    pub fn memory_bytes(&self) -> usize {
+        use std::mem::size_of;
+        self.primitives.capacity() * size_of::<Primitive>()
+            + self.transforms.capacity() * size_of::<Transform>()
+            + self.csg.capacity() * size_of::<CsgNode>()
+            + self
+                .csg
+                .iter()
+                .map(|c| c.children.capacity() * 4)
+                .sum::<usize>()
+            + self.bvh.nodes.capacity() * size_of::<super::bvh::Node>()
+            + self.bvh.items.capacity() * 4
+            + self.unbounded.capacity() * 4
+            + self.tables.memory_bytes()
+    }
+
     fn item_bounds(&self, item: u32) -> Option<Aabb> {
         if item & CSG_BIT == 0 {
             let p = &self.primitives[item as usize];
@@ -458,6 +476,11 @@ impl World {
             shading_normal,
             material: p.material,
         }
+    }
+
+    /// The deepest leaf's depth in the BVH (0 for a single leaf or an empty tree).
+    pub fn bvh_depth(&self) -> usize {
+        self.bvh.depth()
     }
 
     pub fn bounds(&self) -> Aabb {
