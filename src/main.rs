@@ -124,6 +124,25 @@ enum Command {
         #[arg(long, value_name = "S")]
         diff_scale: Option<f64>,
     },
+    /// Geometry benchmark: camera and shadow rays per second on 1e3, 1e5, 1e6 spheres, BVH
+    /// build time and memory per object, and the wall time against POV-Ray on a `#while`
+    /// scene. Prints figures; not a timed test.
+    Bench {
+        /// Sphere counts for the ray-rate table.
+        #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000])]
+        counts: Vec<usize>,
+        /// Rays of each kind per count.
+        #[arg(long, default_value_t = 200_000)]
+        rays: usize,
+        /// Sphere counts for the side-by-side run against POV-Ray (rounded to cubes); `0`
+        /// skips it.
+        #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000])]
+        povray_counts: Vec<usize>,
+        #[arg(long, default_value_t = 320)]
+        width: u32,
+        #[arg(long, default_value_t = 240)]
+        height: u32,
+    },
     /// Error against time: K seeds at each sample count against a reference, optionally
     /// POV-Ray at its quality settings; writes a CSV, charts (SVG, PNG) and a summary.
     Converge {
@@ -388,6 +407,24 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                     .map_err(|e| e.to_string())?;
                 println!("{}: signed difference, scale +-{scale:.5}", path.display());
             }
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Bench {
+            counts,
+            rays,
+            povray_counts,
+            width,
+            height,
+        } => {
+            let options = penumbra::study::bench::BenchOptions {
+                counts,
+                rays,
+                povray_counts: povray_counts.into_iter().filter(|&n| n > 0).collect(),
+                width,
+                height,
+                penumbra: std::env::current_exe().map_err(|e| e.to_string())?,
+            };
+            penumbra::study::bench::run(&options, |line| println!("{line}"));
             Ok(ExitCode::SUCCESS)
         }
         Command::Converge {

@@ -4,7 +4,42 @@
 
 use glam::DVec3;
 
+use std::cell::Cell;
+
+use rayon::prelude::*;
+
 use super::{Aabb, Ray};
+
+/// Subtrees with fewer items than this on either side are built on the current thread.
+const PARALLEL_MIN_ITEMS: usize = 4096;
+
+thread_local! {
+    /// Cleared by `build_sequential` on the building thread.
+    static PARALLEL: Cell<bool> = const { Cell::new(true) };
+}
+
+fn parallel() -> bool {
+    PARALLEL.with(|p| p.get())
+}
+
+fn items_len_parallel(left: usize, right: usize) -> bool {
+    left.min(right) >= PARALLEL_MIN_ITEMS && parallel()
+}
+
+type Bins = ([Aabb; BINS], [usize; BINS]);
+
+/// The union of the items' boxes (min and max are exact, so the parallel fold for large
+/// slices gives the sequential result bit for bit).
+fn fold_bounds(items: &[BuildItem], f: impl Fn(&BuildItem) -> Aabb + Sync) -> Aabb {
+    if items.len() >= PARALLEL_MIN_ITEMS && parallel() {
+        items
+            .par_iter()
+            .fold(|| Aabb::EMPTY, |a, it| a.union(&f(it)))
+            .reduce(|| Aabb::EMPTY, |a, b| a.union(&b))
+    } else {
+        items.iter().fold(Aabb::EMPTY, |a, it| a.union(&f(it)))
+    }
+}
 
 const BINS: usize = 12;
 const MAX_LEAF: usize = 4;
@@ -12,7 +47,7 @@ const MAX_LEAF: usize = 4;
 const SAH_DEPTH_LIMIT: usize = 40;
 pub const STACK_SIZE: usize = 64;
 
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Node {
     pub bounds: Aabb,
     /// Leaf: first item. Interior: index of the right child.
@@ -23,7 +58,7 @@ pub struct Node {
     pub axis: u16,
 }
 
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Bvh {
     pub nodes: Vec<Node>,
     /// Item indices in leaf order.
@@ -37,10 +72,11 @@ struct BuildItem {
 }
 
 impl Bvh {
-    /// Builds over items given by their bounds (finite, non-empty).
+    /// Builds over items given by their bounds (finite, non-empty). Large subtrees are built
+    /// in parallel; the tree is the same as a sequential build's, node for node.
     pub fn build(bounds: &[Aabb]) -> Bvh {
         let mut items: Vec<BuildItem> = bounds
-            .iter()
+            .par_iter()
             .enumerate()
             .map(|(i, b)| BuildItem {
                 bounds: *b,
@@ -58,8 +94,45 @@ impl Bvh {
         bvh
     }
 
+    /// Builds the sequential way only (for tests and the benchmark's comparison).
+    pub fn build_sequential(bounds: &[Aabb]) -> Bvh {
+        PARALLEL.with(|p| p.set(false));
+        let bvh = Bvh::build(bounds);
+        PARALLEL.with(|p| p.set(true));
+        bvh
+    }
+
+    /// The deepest leaf's depth (0 for a single leaf or an empty tree).
+    pub fn depth(&self) -> usize {
+        let mut deepest = 0;
+        let mut stack = vec![(0usize, 0usize)];
+        while let Some((node, depth)) = stack.pop() {
+            let Some(n) = self.nodes.get(node) else {
+                continue;
+            };
+            if n.count > 0 {
+                deepest = deepest.max(depth);
+            } else {
+                stack.push((node + 1, depth + 1));
+                stack.push((n.offset as usize, depth + 1));
+            }
+        }
+        deepest
+    }
+
+    /// Appends another tree (built over a later part of the item list), shifting its links.
+    fn append(&mut self, other: Bvh) {
+        let node_base = self.nodes.len() as u32;
+        let item_base = self.items.len() as u32;
+        self.nodes.extend(other.nodes.into_iter().map(|mut n| {
+            n.offset += if n.count > 0 { item_base } else { node_base };
+            n
+        }));
+        self.items.extend(other.items);
+    }
+
     fn build_node(&mut self, items: &mut [BuildItem], depth: usize) -> usize {
-        let bounds = items.iter().fold(Aabb::EMPTY, |a, it| a.union(&it.bounds));
+        let bounds = fold_bounds(items, |it| it.bounds);
         let node_index = self.nodes.len();
         self.nodes.push(Node {
             bounds,
@@ -71,7 +144,7 @@ impl Bvh {
             self.make_leaf(node_index, items);
             return node_index;
         }
-        let centres = items.iter().fold(Aabb::EMPTY, |a, it| a.grow(it.centre));
+        let centres = fold_bounds(items, |it| Aabb::new(it.centre, it.centre));
         let extent = centres.max - centres.min;
         let axis = if extent.x >= extent.y && extent.x >= extent.z {
             0
@@ -105,8 +178,26 @@ impl Bvh {
             }
         };
         let (left, right) = items.split_at_mut(mid);
-        self.build_node(left, depth + 1);
-        let right_index = self.build_node(right, depth + 1);
+        let right_index = if items_len_parallel(left.len(), right.len()) {
+            // Both halves are large: build them side by side into their own arrays and
+            // splice them in the order a sequential build would have written them.
+            let sub = |part: &mut [BuildItem]| {
+                let mut t = Bvh {
+                    nodes: Vec::with_capacity(2 * part.len()),
+                    items: Vec::with_capacity(part.len()),
+                };
+                t.build_node(part, depth + 1);
+                t
+            };
+            let (l, r) = rayon::join(|| sub(left), || sub(right));
+            self.append(l);
+            let right_index = self.nodes.len();
+            self.append(r);
+            right_index
+        } else {
+            self.build_node(left, depth + 1);
+            self.build_node(right, depth + 1)
+        };
         self.nodes[node_index].offset = right_index as u32;
         self.nodes[node_index].axis = axis as u16;
         node_index
@@ -127,13 +218,25 @@ impl Bvh {
         bounds: &Aabb,
     ) -> Option<SahDecision> {
         let bin_of = |c: f64| (((c - min) / extent * BINS as f64) as usize).min(BINS - 1);
-        let mut bin_bounds = [Aabb::EMPTY; BINS];
-        let mut bin_count = [0usize; BINS];
-        for it in items.iter() {
+        let bin = |mut acc: Bins, it: &BuildItem| {
             let b = bin_of(it.centre[axis]);
-            bin_bounds[b] = bin_bounds[b].union(&it.bounds);
-            bin_count[b] += 1;
-        }
+            acc.0[b] = acc.0[b].union(&it.bounds);
+            acc.1[b] += 1;
+            acc
+        };
+        let empty = || ([Aabb::EMPTY; BINS], [0usize; BINS]);
+        // Unions of boxes and counts are exact, so the parallel sums equal the sequential.
+        let (bin_bounds, bin_count) = if items.len() >= PARALLEL_MIN_ITEMS && parallel() {
+            items.par_iter().fold(empty, bin).reduce(empty, |mut a, b| {
+                for i in 0..BINS {
+                    a.0[i] = a.0[i].union(&b.0[i]);
+                    a.1[i] += b.1[i];
+                }
+                a
+            })
+        } else {
+            items.iter().fold(empty(), bin)
+        };
         // Cost of splitting after bin i, from prefix and suffix sweeps.
         let mut right_area = [0.0; BINS];
         let mut right_count = [0usize; BINS];
@@ -286,5 +389,38 @@ mod tests {
             },
         );
         assert_eq!(count, 100_000);
+    }
+
+    /// A simple deterministic scatter of boxes of varied sizes (no random generator needed).
+    fn scattered_boxes(n: usize) -> Vec<Aabb> {
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        (0..n)
+            .map(|_| {
+                let c = DVec3::new(next(), next(), next()) * 100.0;
+                let r = 0.01 + next() * next();
+                Aabb::new(c - DVec3::splat(r), c + DVec3::splat(r))
+            })
+            .collect()
+    }
+
+    #[test]
+    fn parallel_build_gives_the_sequential_tree() {
+        let bounds = scattered_boxes(60_000);
+        let parallel = Bvh::build(&bounds);
+        let sequential = Bvh::build_sequential(&bounds);
+        assert_eq!(parallel.nodes.len(), sequential.nodes.len());
+        assert!(parallel == sequential, "the trees differ");
+        // And it is deterministic run to run.
+        assert!(Bvh::build(&bounds) == parallel);
+        // Every item appears exactly once.
+        let mut seen = parallel.items.clone();
+        seen.sort_unstable();
+        assert!(seen.iter().enumerate().all(|(i, &x)| i as u32 == x));
     }
 }

@@ -16,6 +16,21 @@ pub struct ShapeTables {
     pub polygons: Vec<PolygonData>,
 }
 
+impl ShapeTables {
+    /// Bytes held by the tables.
+    pub fn memory_bytes(&self) -> usize {
+        use std::mem::size_of;
+        self.quadrics.capacity() * size_of::<[f64; 10]>()
+            + self.triangles.capacity() * size_of::<TriangleData>()
+            + self.polygons.capacity() * size_of::<PolygonData>()
+            + self
+                .polygons
+                .iter()
+                .map(|p| p.points.capacity() * 16 + p.loops.capacity() * 16)
+                .sum::<usize>()
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriangleData {
     pub p0: DVec3,

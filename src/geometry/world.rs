@@ -153,6 +153,7 @@ impl WorldBuilder {
             *item = bounded[*item as usize];
         }
         world.bvh = bvh;
+        world.primitives_in_leaf_order();
         world
     }
 }
@@ -198,8 +199,58 @@ fn bake(shape: ShapeKind, t: &Transform) -> Option<ShapeKind> {
 }
 
 impl World {
+    /// Renumbers the primitives so those the BVH's leaves name directly come in leaf order:
+    /// neighbours in space become neighbours in memory, which keeps traversal of large
+    /// scenes in cache. Every reference (leaves, CSG children, unbounded list) is remapped.
+    fn primitives_in_leaf_order(&mut self) {
+        let n = self.primitives.len();
+        let mut new_index = vec![u32::MAX; n];
+        let mut order = Vec::with_capacity(n);
+        for &item in &self.bvh.items {
+            if item & CSG_BIT == 0 && new_index[item as usize] == u32::MAX {
+                new_index[item as usize] = order.len() as u32;
+                order.push(item);
+            }
+        }
+        for (i, slot) in new_index.iter_mut().enumerate() {
+            if *slot == u32::MAX {
+                *slot = order.len() as u32;
+                order.push(i as u32);
+            }
+        }
+        self.primitives = order.iter().map(|&i| self.primitives[i as usize]).collect();
+        let remap = |item: &mut u32| {
+            if *item & CSG_BIT == 0 {
+                *item = new_index[*item as usize];
+            }
+        };
+        self.bvh.items.iter_mut().for_each(remap);
+        self.unbounded.iter_mut().for_each(remap);
+        for node in &mut self.csg {
+            node.children.iter_mut().for_each(remap);
+        }
+    }
+
     pub fn primitive_count(&self) -> usize {
         self.primitives.len()
+    }
+
+    /// Bytes held by the geometry's arrays (primitives, transforms, shape tables' headers,
+    /// CSG nodes, BVH nodes and item list), for the benchmark's memory per object.
+    pub fn memory_bytes(&self) -> usize {
+        use std::mem::size_of;
+        self.primitives.capacity() * size_of::<Primitive>()
+            + self.transforms.capacity() * size_of::<Transform>()
+            + self.csg.capacity() * size_of::<CsgNode>()
+            + self
+                .csg
+                .iter()
+                .map(|c| c.children.capacity() * 4)
+                .sum::<usize>()
+            + self.bvh.nodes.capacity() * size_of::<super::bvh::Node>()
+            + self.bvh.items.capacity() * 4
+            + self.unbounded.capacity() * 4
+            + self.tables.memory_bytes()
     }
 
     fn item_bounds(&self, item: u32) -> Option<Aabb> {
@@ -458,6 +509,11 @@ impl World {
             shading_normal,
             material: p.material,
         }
+    }
+
+    /// The deepest leaf's depth in the BVH (0 for a single leaf or an empty tree).
+    pub fn bvh_depth(&self) -> usize {
+        self.bvh.depth()
     }
 
     pub fn bounds(&self) -> Aabb {

@@ -470,11 +470,15 @@ impl<'a> Integrator<'a> {
             };
             let (l, distance) = (incidence.l, incidence.distance);
             let mut n_dot_l = n.dot(l);
+            // A double-illuminated surface lit from behind: its shadow ray starts on the
+            // light's side, or it would cross the surface it leaves.
+            let mut origin = origin;
             if n_dot_l <= 0.0 {
                 if !material.double_illuminate {
                     continue;
                 }
                 n_dot_l = -n_dot_l;
+                origin = offset_point(p, geometric, l);
             }
             let mut light_colour = light.colour * incidence.factor;
             if light_colour == DVec3::ZERO {

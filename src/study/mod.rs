@@ -2,6 +2,7 @@
 //! converged reference (see docs on testing statistics), and the reference renderer that
 //! drives the installed `povray`.
 
+pub mod bench;
 pub mod charts;
 pub mod compare;
 pub mod converge;
