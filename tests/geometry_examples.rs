@@ -40,21 +40,12 @@ const EXAMPLES: &[Example] = &[
     // Columns of cylinders and tori and a box room, all textured by `#default`.
     Example {
         path: "advanced/bwstripe.pov",
-        blocked: Some(
-            "its default texture uses the `gradient` pattern with `triangle_wave`, which the \
-             appearance stage does not support yet; it is also a `#version 3.6` scene \
-             (legacy gamma and opacity)",
-        ),
+        blocked: None,
     },
     // Shapes from shapes2.inc (intersections of planes, cones, triangles).
     Example {
         path: "incdemo/shapes2.pov",
-        blocked: Some(
-            "it says `assumed_gamma 2.2`, and penumbra ignores assumed_gamma (renders as if \
-             1.0), so every colour is too bright. The geometry is right: the same scene with \
-             `assumed_gamma 1.0` passes against POV-Ray's render of that (sqrt(B) = 0, no \
-             failing tile)",
-        ),
+        blocked: None,
     },
     // transforms.inc macros: Shear_Trans, Matrix_Trans, Axis_Rotate_Trans, Reorient_Trans ...
     Example {

@@ -73,7 +73,9 @@ fn verdict(scene: &str) -> Option<study::Verdict> {
                 seed: 100 + k,
                 ..RenderOptions::default()
             };
-            penumbra::render_scene(&scene_model, &o, &()).expect("renders").0
+            penumbra::render_scene(&scene_model, &o, &())
+                .expect("renders")
+                .0
         })
         .collect();
     Some(study::evaluate(&images, &reference.full, &reference.half).expect("comparable"))

@@ -190,16 +190,7 @@ fn evaluate(
         ev.declare_global(name, eval::value::Value::Float(*value));
     }
     ev.run(name, source)?;
-    let mut scene = std::mem::take(&mut ev.scene);
-    // 3.7 scenes with an assumed_gamma other than 1 write gamma-encoded colours; older
-    // scenes are handled at output instead (render::PreparedScene::legacy_gamma).
-    if let Some(g) = scene.settings.assumed_gamma
-        && !scene.legacy()
-        && g > 0.0
-        && (g - 1.0).abs() > 1e-9
-    {
-        scene.decode_colours(g);
-    }
+    let scene = std::mem::take(&mut ev.scene);
     Ok(Loaded {
         scene,
         warnings: std::mem::take(&mut ev.warnings),

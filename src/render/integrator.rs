@@ -385,7 +385,8 @@ impl<'a> Integrator<'a> {
         for pigment in &sky.pigments {
             let c = evaluate_pigment(pigment, d);
             let att = c.opacity(scene.legacy);
-            colour = c.rgb * att * sky.emission + colour * (c.rgb * c.filter + DVec3::splat(c.transmit));
+            colour =
+                c.rgb * att * sky.emission + colour * (c.rgb * c.filter + DVec3::splat(c.transmit));
         }
         colour
     }
@@ -577,7 +578,10 @@ impl<'a> Integrator<'a> {
                 let c = layer.colour;
                 filter *= c.rgb * c.filter + DVec3::splat(c.transmit);
             }
-            if material.fade_power > 0.0 && material.fade_distance > 0.0 && fading_len < fading.len() {
+            if material.fade_power > 0.0
+                && material.fade_distance > 0.0
+                && fading_len < fading.len()
+            {
                 let leaving = scene.world.surface(ray, hit).normal.dot(ray.direction) > 0.0;
                 fading[fading_len] = (hit.t, hit.primitive, leaving);
                 fading_len += 1;

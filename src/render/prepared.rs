@@ -9,13 +9,12 @@ use crate::geometry::{
     CsgOp, Item, PolygonData, ShapeKind, Transform, TriangleData, World, WorldBuilder, flags,
 };
 use crate::scene::{
-    Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere,
-    Texture,
+    Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere, Texture,
 };
 
 use super::lights::PreparedLight;
 
-/// How a pre-3.7 scene's traced values become linear light.
+/// How a gamma-space scene's traced values become linear light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LegacyGamma {
     Srgb,
@@ -54,9 +53,9 @@ pub struct PreparedScene {
     pub sky_sphere: Option<SkySphere>,
     pub settings: GlobalSettings,
     pub legacy: bool,
-    /// Pre-3.7 scenes are computed in display-gamma space; POV-Ray 3.7 then writes linear
-    /// files by decoding each traced value: with the sRGB curve when the scene gives no
-    /// `assumed_gamma`, else with that power (measured).
+    /// Scenes with `assumed_gamma g` (g != 1), and pre-3.7 scenes without one, are computed
+    /// in gamma space; POV-Ray 3.7 then writes linear files by decoding each traced value,
+    /// with the power g, or the sRGB curve for old scenes without assumed_gamma (measured).
     pub legacy_gamma: Option<LegacyGamma>,
     /// Whether any material lets light through: if none does, shadow rays only ask
     /// whether anything is in the way.
@@ -91,10 +90,9 @@ impl PreparedScene {
             settings: scene.settings.clone(),
             legacy: scene.legacy(),
             legacy_gamma: match (scene.legacy(), scene.settings.assumed_gamma) {
-                (false, _) => None,
                 (true, None) => Some(LegacyGamma::Srgb),
-                (true, Some(g)) if (g - 1.0).abs() > 1e-9 && g > 0.0 => Some(LegacyGamma::Power(g)),
-                (true, Some(_)) => None,
+                (_, Some(g)) if (g - 1.0).abs() > 1e-9 && g > 0.0 => Some(LegacyGamma::Power(g)),
+                _ => None,
             },
         }
     }

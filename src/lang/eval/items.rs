@@ -12,13 +12,7 @@ use crate::scene::{AreaLight, CameraSpec, Light, LightKind};
 type R<T> = Result<T, Diagnostic>;
 
 /// Features POV-Ray has at the top level that penumbra does not model yet.
-const UNSUPPORTED_ITEMS: &[&str] = &[
-    "fog",
-    "rainbow",
-    "media",
-    "photons",
-    "radiosity",
-];
+const UNSUPPORTED_ITEMS: &[&str] = &["fog", "rainbow", "media", "photons", "radiosity"];
 
 impl Evaluator<'_> {
     pub(super) fn item(&mut self) -> R<()> {
@@ -290,8 +284,8 @@ impl Evaluator<'_> {
                     self.next()?;
                     self.float()?;
                 }
-                "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
-                | "spherical" | "cylinder" | "mesh_camera" | "normal" => {
+                "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
+                | "cylinder" | "mesh_camera" | "normal" => {
                     let word = word.to_string();
                     self.unsupported_or_skip(&tok, &word)?;
                 }
