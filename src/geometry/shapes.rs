@@ -12,6 +12,8 @@ use super::{Aabb, Ray};
 pub struct ShapeTables {
     /// POV-Ray's order: A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J.
     pub quadrics: Vec<[f64; 10]>,
+    /// POV-Ray's `quartic` order: descending powers of x, then y, then z (see QUARTIC_TERMS).
+    pub quartics: Vec<[f64; 35]>,
     pub triangles: Vec<TriangleData>,
     pub polygons: Vec<PolygonData>,
 }
@@ -83,6 +85,7 @@ pub enum ShapeKind {
         minor: f64,
     },
     Quadric(u32),
+    Quartic(u32),
     Triangle(u32),
     Polygon(u32),
 }
@@ -95,7 +98,7 @@ impl ShapeKind {
                 center - DVec3::splat(radius),
                 center + DVec3::splat(radius),
             )),
-            ShapeKind::Plane { .. } | ShapeKind::Quadric(_) => None,
+            ShapeKind::Plane { .. } | ShapeKind::Quadric(_) | ShapeKind::Quartic(_) => None,
             ShapeKind::Box { min, max } => Some(Aabb::new(min, max)),
             ShapeKind::Cone { r0, r1, .. } => {
                 let r = r0.abs().max(r1.abs());
@@ -174,6 +177,7 @@ impl ShapeKind {
             }
             ShapeKind::Torus { major, minor } => torus_hits(ray, major, minor),
             ShapeKind::Quadric(i) => quadric_hits(ray, &tables.quadrics[i as usize]),
+            ShapeKind::Quartic(i) => quartic_hits(ray, &tables.quartics[i as usize]),
             ShapeKind::Triangle(i) => {
                 let mut r = Roots::default();
                 if let Some((t, _, _)) = triangle_hit(ray, &tables.triangles[i as usize]) {
@@ -248,6 +252,7 @@ impl ShapeKind {
                     2.0 * c * p.z + e * p.x + f * p.y + ii,
                 )
             }
+            ShapeKind::Quartic(i) => quartic_gradient(&tables.quartics[i as usize], p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -294,6 +299,7 @@ impl ShapeKind {
                 q.length_squared() < minor * minor * (1.0 - 1e-12)
             }
             ShapeKind::Quadric(i) => quadric_value(&tables.quadrics[i as usize], p) < 0.0,
+            ShapeKind::Quartic(i) => quartic_value(&tables.quartics[i as usize], p) < 0.0,
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }
@@ -416,6 +422,105 @@ fn quadric_hits(ray: &Ray, q: &[f64; 10]) -> Roots {
         + i * v.z;
     let qc = quadric_value(q, o);
     quadratic(qa, qb, qc)
+}
+
+/// The exponents (x, y, z) of the 35 terms of a quartic, in POV-Ray's order.
+const QUARTIC_TERMS: [(u8, u8, u8); 35] = {
+    let mut out = [(0u8, 0u8, 0u8); 35];
+    let mut n = 0;
+    let mut i = 4i32;
+    while i >= 0 {
+        let mut j = 4 - i;
+        while j >= 0 {
+            let mut k = 4 - i - j;
+            while k >= 0 {
+                out[n] = (i as u8, j as u8, k as u8);
+                n += 1;
+                k -= 1;
+            }
+            j -= 1;
+        }
+        i -= 1;
+    }
+    out
+};
+
+fn quartic_value(q: &[f64; 35], p: DVec3) -> f64 {
+    QUARTIC_TERMS
+        .iter()
+        .zip(q)
+        .map(|(&(i, j, k), c)| c * p.x.powi(i as i32) * p.y.powi(j as i32) * p.z.powi(k as i32))
+        .sum()
+}
+
+fn quartic_gradient(q: &[f64; 35], p: DVec3) -> DVec3 {
+    let pw = |v: f64, e: u8| if e == 0 { 1.0 } else { v.powi(e as i32) };
+    let mut g = DVec3::ZERO;
+    for (&(i, j, k), &c) in QUARTIC_TERMS.iter().zip(q) {
+        if c == 0.0 {
+            continue;
+        }
+        if i > 0 {
+            g.x += c * i as f64 * pw(p.x, i - 1) * pw(p.y, j) * pw(p.z, k);
+        }
+        if j > 0 {
+            g.y += c * j as f64 * pw(p.x, i) * pw(p.y, j - 1) * pw(p.z, k);
+        }
+        if k > 0 {
+            g.z += c * k as f64 * pw(p.x, i) * pw(p.y, j) * pw(p.z, k - 1);
+        }
+    }
+    g
+}
+
+/// The quartic along the ray as a polynomial in t (each coordinate is linear in t, so each
+/// term is a product of small powers), then its real roots.
+fn quartic_hits(ray: &Ray, q: &[f64; 35]) -> Roots {
+    // powers[axis][n]: (o + t d)^n as coefficients of t^0..t^4.
+    let mut powers = [[[0.0f64; 5]; 5]; 3];
+    for axis in 0..3 {
+        let (o, d) = (ray.origin[axis], ray.direction[axis]);
+        powers[axis][0][0] = 1.0;
+        for n in 1..5 {
+            let prev = powers[axis][n - 1];
+            let mut next = [0.0; 5];
+            for m in 0..5 {
+                next[m] += prev[m] * o;
+                if m + 1 < 5 {
+                    next[m + 1] += prev[m] * d;
+                }
+            }
+            powers[axis][n] = next;
+        }
+    }
+    let mul = |a: &[f64; 5], b: &[f64; 5]| {
+        let mut out = [0.0; 5];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate().take(5 - i) {
+                out[i + j] += x * y;
+            }
+        }
+        out
+    };
+    let mut poly = [0.0f64; 5];
+    for (&(i, j, k), &c) in QUARTIC_TERMS.iter().zip(q) {
+        if c == 0.0 {
+            continue;
+        }
+        let term = mul(
+            &mul(&powers[0][i as usize], &powers[1][j as usize]),
+            &powers[2][k as usize],
+        );
+        for m in 0..5 {
+            poly[m] += c * term[m];
+        }
+    }
+    let reach = 1e6 * (ray.origin.length() + 1.0) / ray.direction.length().max(1e-300);
+    roots_in(
+        &[poly[4], poly[3], poly[2], poly[1], poly[0]],
+        -reach,
+        reach,
+    )
 }
 
 /// Möller-Trumbore: distance and barycentric (u, v) of the hit.

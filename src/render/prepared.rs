@@ -335,6 +335,17 @@ impl Builder {
                     None,
                 )
             }
+            Shape::Quartic { ref coefficients } => {
+                let mut q = [0.0; 35];
+                for (slot, c) in q.iter_mut().zip(coefficients) {
+                    *slot = *c;
+                }
+                self.world.tables.quartics.push(q);
+                (
+                    ShapeKind::Quartic((self.world.tables.quartics.len() - 1) as u32),
+                    None,
+                )
+            }
             Shape::Polygon { ref points } => {
                 let (data, frame) = polygon(points)?;
                 self.world.tables.polygons.push(data);

@@ -48,6 +48,11 @@ pub enum Shape {
     Quadric {
         coefficients: [f64; 10],
     },
+    /// `quartic { <a0, ..., a34> }`: the general degree-4 polynomial, terms ordered by
+    /// descending powers of x, then y, then z (x^4, x^3 y, x^3 z, x^3, x^2 y^2, ...).
+    Quartic {
+        coefficients: Vec<f64>,
+    },
     Triangle {
         corners: [DVec3; 3],
     },

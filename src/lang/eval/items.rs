@@ -113,6 +113,7 @@ impl Evaluator<'_> {
                 lights: vec![self.light_source()?],
             })),
             "camera" => Value::Camera(Box::new(self.camera_block()?)),
+            "sky_sphere" => Value::SkySphere(Box::new(self.sky_sphere()?)),
             "pigment" => {
                 self.next()?;
                 Value::Pigment(Box::new(
@@ -209,6 +210,12 @@ impl Evaluator<'_> {
                     self.next()?;
                     let (c, _) = self.colour()?;
                     sky.emission = DVec3::new(c[0], c[1], c[2]);
+                }
+                Some(word) if matches!(self.lookup(word), Some(Value::SkySphere(_))) => {
+                    if let Some(Value::SkySphere(named)) = self.lookup(word).cloned() {
+                        sky = *named;
+                    }
+                    self.next()?;
                 }
                 _ => {
                     if let Some(t) = self.transform_modifier()? {

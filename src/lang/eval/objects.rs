@@ -25,6 +25,7 @@ pub fn is_object_keyword(word: &str) -> bool {
             | "disc"
             | "torus"
             | "quadric"
+            | "quartic"
             | "triangle"
             | "smooth_triangle"
             | "mesh"
@@ -52,7 +53,6 @@ pub fn is_known_unsupported_shape(word: &str) -> bool {
             | "julia_fractal"
             | "bicubic_patch"
             | "cubic"
-            | "quartic"
             | "poly"
             | "polynomial"
             | "ovus"
@@ -191,6 +191,20 @@ impl Evaluator<'_> {
                         abc.x, abc.y, abc.z, def.x, def.y, def.z, ghi.x, ghi.y, ghi.z, j,
                     ],
                 })
+            }
+            "quartic" => {
+                // `quartic { <a0, ..., a34> }`: 35 coefficients, too many for a vector value.
+                self.expect(Punct::Lt, "to open the quartic's 35 coefficients")?;
+                let mut coefficients = Vec::with_capacity(35);
+                for i in 0..35 {
+                    if i > 0 {
+                        self.eat(Punct::Comma)?;
+                    }
+                    let (v, sp) = self.additive()?;
+                    coefficients.push(self.to_float(&v, sp)?);
+                }
+                self.expect(Punct::Gt, "after the quartic's 35 coefficients")?;
+                shape(Shape::Quartic { coefficients })
             }
             "triangle" | "smooth_triangle" => {
                 let (tri, degenerate) = self.triangle_items(word == "smooth_triangle")?;

@@ -860,6 +860,19 @@ impl Evaluator<'_> {
                         self.next()?;
                         t = *named;
                     }
+                    // An element of an array of textures: `texture { T[i][j] }`.
+                    Some(Value::Array(_)) => {
+                        let (v, span) = self.expr()?;
+                        match v {
+                            Value::Texture(named) => t = *named,
+                            other => {
+                                return Err(self.err(
+                                    span,
+                                    format!("expected a texture, found {}", other.kind_name()),
+                                ));
+                            }
+                        }
+                    }
                     _ if UNSUPPORTED_PATTERNS.contains(&word.as_str()) => {
                         return Err(self.unsupported(&tok, &word));
                     }

@@ -95,6 +95,7 @@ pub enum Value {
     Material(Box<(Option<Texture>, Option<Interior>)>),
     Transform(Box<Transform>),
     Macro(Rc<MacroDef>),
+    SkySphere(Box<crate::scene::SkySphere>),
     Array(Rc<std::cell::RefCell<ArrayValue>>),
     /// A declaration that used a feature penumbra lacks. Include files declare many things
     /// a scene never uses, so the error waits until the identifier is used.
@@ -123,6 +124,7 @@ impl Value {
             Value::Material(_) => "a material",
             Value::Transform(_) => "a transform",
             Value::Macro(_) => "a macro",
+            Value::SkySphere(_) => "a sky_sphere",
             Value::Array(_) => "an array",
             Value::Unsupported(_) => "an unsupported value",
         }
