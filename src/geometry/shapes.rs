@@ -478,11 +478,11 @@ fn quartic_gradient(q: &[f64; 35], p: DVec3) -> DVec3 {
 fn quartic_hits(ray: &Ray, q: &[f64; 35]) -> Roots {
     // powers[axis][n]: (o + t d)^n as coefficients of t^0..t^4.
     let mut powers = [[[0.0f64; 5]; 5]; 3];
-    for axis in 0..3 {
+    for (axis, p) in powers.iter_mut().enumerate() {
         let (o, d) = (ray.origin[axis], ray.direction[axis]);
-        powers[axis][0][0] = 1.0;
+        p[0][0] = 1.0;
         for n in 1..5 {
-            let prev = powers[axis][n - 1];
+            let prev = p[n - 1];
             let mut next = [0.0; 5];
             for m in 0..5 {
                 next[m] += prev[m] * o;
@@ -490,7 +490,7 @@ fn quartic_hits(ray: &Ray, q: &[f64; 35]) -> Roots {
                     next[m + 1] += prev[m] * d;
                 }
             }
-            powers[axis][n] = next;
+            p[n] = next;
         }
     }
     let mul = |a: &[f64; 5], b: &[f64; 5]| {
