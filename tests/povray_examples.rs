@@ -21,7 +21,14 @@ const SCENES: &[(&str, Option<&str>)] = &[
     ("lights/fillite.pov", None),
     ("lights/parallel_lights.pov", None),
     ("camera/focalblur.pov", None),
-    // Geometry: the general quartic, with POV-Ray's 35-term coefficient order (issue 4).
+    // Geometry (issue 4): a function-shaped height field of triangles, columns of
+    // cylinders and tori textured by `#default` (a 3.6 scene), shapes2.inc's intersections of
+    // planes and cones (assumed_gamma 2.2), transforms.inc's macros, and the general quartic
+    // with POV-Ray's 35-term coefficient order.
+    ("advanced/sombrero.pov", None),
+    ("advanced/bwstripe.pov", None),
+    ("incdemo/shapes2.pov", None),
+    ("incdemo/transforms.pov", None),
     ("objects/quartic/torus.pov", None),
     ("objects/quartic/piriform.pov", None),
     // Appearance (issue 5).
