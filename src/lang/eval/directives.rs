@@ -459,8 +459,11 @@ impl Evaluator<'_> {
         }
         self.expect(Punct::Eq, &format!("after `{name}`"))?;
         let value = self.declared_value_tolerant()?;
-        self.eat_declare_semicolon();
+        // Assign before looking for the optional `;`: looking past the end of a macro body
+        // closes the macro's scope, and a parameter passed by reference must be written
+        // while that scope still exists (e.g. `#declare Stuff = object { Stuff ... } #end`).
         self.assign(name, value, local);
+        self.eat_declare_semicolon();
         Ok(())
     }
 
