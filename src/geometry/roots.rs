@@ -40,7 +40,13 @@ pub fn quadratic(a: f64, b: f64, c: f64) -> Roots {
     if disc < 0.0 {
         return r;
     }
-    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    pair_from_q(-0.5 * (b + b.signum() * disc.sqrt()), a, c)
+}
+
+/// Both roots of a t^2 + b t + c from q = -(b + sign(b) sqrt(disc)) / 2: q / a and c / q,
+/// ordered. Each is computed without subtracting nearly equal numbers.
+pub fn pair_from_q(q: f64, a: f64, c: f64) -> Roots {
+    let mut r = Roots::default();
     if q == 0.0 {
         r.push(0.0);
         r.push(0.0);

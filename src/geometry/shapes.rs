@@ -4,7 +4,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::roots::{Roots, quadratic, roots_in};
+use super::roots::{Roots, pair_from_q, quadratic, roots_in};
 use super::{Aabb, Ray};
 
 /// Data too large to sit inside [`ShapeKind`].
@@ -310,30 +310,22 @@ impl ShapeKind {
 /// second root from the product of roots (q = -(b + sign(b) sqrt(disc)), t0 = q/a, t1 = c/q).
 #[inline]
 fn sphere_roots(ray: &Ray, center: DVec3, radius: f64) -> Roots {
-    let mut r = Roots::default();
+    let none = Roots::default();
     let d = ray.direction;
     let oc = ray.origin - center;
     let a = d.dot(d);
     if a == 0.0 {
-        return r;
+        return none;
     }
     let b = oc.dot(d); // half of the usual b
     let c = oc.dot(oc) - radius * radius;
     let perp = oc - d * (b / a);
     let disc = a * (radius * radius - perp.dot(perp));
     if disc < 0.0 {
-        return r;
+        return none;
     }
-    let q = -(b + b.signum() * disc.sqrt());
-    if q == 0.0 {
-        r.push(0.0);
-        r.push(0.0);
-        return r;
-    }
-    let (t0, t1) = (q / a, c / q);
-    r.push(t0.min(t1));
-    r.push(t0.max(t1));
-    r
+    // b here is half the usual coefficient, so q carries no factor 1/2.
+    pair_from_q(-(b + b.signum() * disc.sqrt()), a, c)
 }
 
 fn cone_hits(ray: &Ray, r0: f64, r1: f64, open: bool) -> Roots {
