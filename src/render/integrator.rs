@@ -164,7 +164,7 @@ impl<'a> Integrator<'a> {
             media: Media::OUTSIDE,
         };
         let l = self.trace(ray, path, sampler, counts);
-        match self.scene.legacy_gamma {
+        match self.scene.output_gamma {
             // Per sample, as POV-Ray decodes each traced ray; where the estimate is noisy
             // (area lights) the curve's bend adds a small bias (docs/differences.md).
             Some(g) => l.map(|c| g.decode(c)),
@@ -192,7 +192,7 @@ impl<'a> Integrator<'a> {
         let d = ray.direction.normalize();
         let leaving = surface.normal.dot(d) > 0.0;
         let mut colour = self.shade(d, &surface, material, path, leaving, sampler, counts);
-        if leaving && material.fade_distance > 0.0 {
+        if leaving && material.interior.fade_distance > 0.0 {
             // The ray crossed this object's interior to get here. (POV-Ray fades these rays
             // even at fade_power 0, by a half, but not its shadow rays: measured.)
             let distance = hit.t * ray.direction.length();
@@ -265,11 +265,12 @@ impl<'a> Integrator<'a> {
         } else {
             (
                 path.media.current(),
-                material.ior,
-                path.media.entered(material.ior),
+                material.interior.ior,
+                path.media.entered(material.interior.ior),
             )
         };
         let cos_i = -d.dot(n);
+        let mirror = d + 2.0 * cos_i * n;
         let r = self.reflectivity(finish, cos_i, eta_from, eta_to);
         // What the layers let through (their filter and transmit), reduced by what is
         // reflected when the finish conserves energy.
@@ -302,8 +303,7 @@ impl<'a> Integrator<'a> {
             let weight = path.weight * reflect_weight / p_reflect;
             let q = self.survival(weight, finish.reflection.exponent == 1.0);
             if q > 0.0 && self.survives(q, path.level, 0, sampler) {
-                let dir = d + 2.0 * cos_i * n;
-                let reflected = Ray::new(offset_point(p, geometric, dir), dir);
+                let reflected = Ray::new(offset_point(p, geometric, mirror), mirror);
                 counts.secondary += 1;
                 let next = Path {
                     level: path.level + 1,
@@ -326,47 +326,25 @@ impl<'a> Integrator<'a> {
             let q = self.survival(weight, true);
             if q > 0.0 && self.survives(q, path.level, 1, sampler) {
                 let eta = eta_from / eta_to;
-                let media = beyond;
-                let straight = (eta - 1.0).abs() < 1e-12;
-                let incoming = if straight {
-                    // ior 1 continues straight and does not count a trace level.
-                    let ray = Ray::new(offset_point(p, geometric, d), d);
-                    counts.secondary += 1;
-                    let next = Path {
-                        weight: weight / q,
-                        skip: path.skip,
-                        media,
-                        ..path
-                    };
-                    self.trace(&ray, next, sampler, counts)
+                // ior 1 continues straight and does not count a trace level; total internal
+                // reflection sends the transmitted part along the mirror direction.
+                let (dir, level, media, skip) = if (eta - 1.0).abs() < 1e-12 {
+                    (d, path.level, beyond, path.skip)
                 } else {
                     match refract(d, n, eta) {
-                        Some(dir) => {
-                            let ray = Ray::new(offset_point(p, geometric, dir), dir);
-                            counts.secondary += 1;
-                            let next = Path {
-                                level: path.level + 1,
-                                weight: weight / q,
-                                skip: path.skip & !flags::NO_IMAGE,
-                                media,
-                            };
-                            self.trace(&ray, next, sampler, counts)
-                        }
-                        // Total internal reflection: POV-Ray reflects the transmitted part.
-                        None => {
-                            let dir = d + 2.0 * cos_i * n;
-                            let ray = Ray::new(offset_point(p, geometric, dir), dir);
-                            counts.secondary += 1;
-                            let next = Path {
-                                level: path.level + 1,
-                                weight: weight / q,
-                                skip: path.skip,
-                                media: path.media,
-                            };
-                            self.trace(&ray, next, sampler, counts)
-                        }
+                        Some(dir) => (dir, path.level + 1, beyond, path.skip & !flags::NO_IMAGE),
+                        None => (mirror, path.level + 1, path.media, path.skip),
                     }
                 };
+                let ray = Ray::new(offset_point(p, geometric, dir), dir);
+                counts.secondary += 1;
+                let next = Path {
+                    level,
+                    weight: weight / q,
+                    skip,
+                    media,
+                };
+                let incoming = self.trace(&ray, next, sampler, counts);
                 colour += transmit * incoming / (q * p_transmit);
             }
         }
@@ -578,8 +556,8 @@ impl<'a> Integrator<'a> {
                 let c = layer.colour;
                 filter *= c.rgb * c.filter + DVec3::splat(c.transmit);
             }
-            if material.fade_power > 0.0
-                && material.fade_distance > 0.0
+            if material.interior.fade_power > 0.0
+                && material.interior.fade_distance > 0.0
                 && fading_len < fading.len()
             {
                 let leaving = scene.world.surface(ray, hit).normal.dot(ray.direction) > 0.0;
@@ -641,16 +619,16 @@ pub fn refract(d: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
 
 /// Interior fade over `distance` inside an object.
 fn fade(material: &Material, distance: f64) -> DVec3 {
-    let colour = material.fade_colour;
-    let ratio = distance / material.fade_distance;
-    if material.fade_power >= 1000.0 {
+    let colour = material.interior.fade_colour;
+    let ratio = distance / material.interior.fade_distance;
+    if material.interior.fade_power >= 1000.0 {
         DVec3::new(
             (-(1.0 - colour.x) * ratio).exp(),
             (-(1.0 - colour.y) * ratio).exp(),
             (-(1.0 - colour.z) * ratio).exp(),
         )
     } else {
-        colour + (DVec3::ONE - colour) / (1.0 + ratio.powf(material.fade_power))
+        colour + (DVec3::ONE - colour) / (1.0 + ratio.powf(material.interior.fade_power))
     }
 }
 

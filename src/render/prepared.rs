@@ -14,19 +14,19 @@ use crate::scene::{
 
 use super::lights::PreparedLight;
 
-/// How a gamma-space scene's traced values become linear light.
+/// How the traced values of a scene computed in gamma space become linear light.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum LegacyGamma {
+pub enum GammaDecode {
     Srgb,
     Power(f64),
 }
 
-impl LegacyGamma {
+impl GammaDecode {
     pub fn decode(self, c: f64) -> f64 {
         let c = c.max(0.0);
         match self {
-            LegacyGamma::Srgb => crate::output::srgb::decode(c),
-            LegacyGamma::Power(g) => c.powf(g),
+            GammaDecode::Srgb => crate::output::srgb::decode(c),
+            GammaDecode::Power(g) => c.powf(g),
         }
     }
 }
@@ -37,10 +37,7 @@ pub struct Material {
     pub double_illuminate: bool,
     /// Whether the texture lets light through anywhere (else shadow rays stop here).
     pub transmits: bool,
-    pub ior: f64,
-    pub fade_distance: f64,
-    pub fade_power: f64,
-    pub fade_colour: DVec3,
+    pub interior: Interior,
 }
 
 #[derive(Clone, Debug)]
@@ -56,7 +53,7 @@ pub struct PreparedScene {
     /// Scenes with `assumed_gamma g` (g != 1), and pre-3.7 scenes without one, are computed
     /// in gamma space; POV-Ray 3.7 then writes linear files by decoding each traced value,
     /// with the power g, or the sRGB curve for old scenes without assumed_gamma (measured).
-    pub legacy_gamma: Option<LegacyGamma>,
+    pub output_gamma: Option<GammaDecode>,
     /// Whether any material lets light through: if none does, shadow rays only ask
     /// whether anything is in the way.
     pub any_transmitting: bool,
@@ -89,9 +86,9 @@ impl PreparedScene {
             sky_sphere: scene.sky_sphere.clone(),
             settings: scene.settings.clone(),
             legacy: scene.legacy(),
-            legacy_gamma: match (scene.legacy(), scene.settings.assumed_gamma) {
-                (true, None) => Some(LegacyGamma::Srgb),
-                (_, Some(g)) if (g - 1.0).abs() > 1e-9 && g > 0.0 => Some(LegacyGamma::Power(g)),
+            output_gamma: match (scene.legacy(), scene.settings.assumed_gamma) {
+                (true, None) => Some(GammaDecode::Srgb),
+                (_, Some(g)) if (g - 1.0).abs() > 1e-9 && g > 0.0 => Some(GammaDecode::Power(g)),
                 _ => None,
             },
         }
@@ -237,10 +234,7 @@ impl Builder {
             texture: looks.texture.clone(),
             double_illuminate: looks.flags.double_illuminate,
             transmits: may_transmit(looks.texture),
-            ior: interior.ior,
-            fade_distance: interior.fade_distance,
-            fade_power: interior.fade_power,
-            fade_colour: interior.fade_colour,
+            interior: *interior,
         });
         (self.materials.len() - 1) as u32
     }

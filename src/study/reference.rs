@@ -152,22 +152,6 @@ impl<'a> PovrayRunner<'a> {
             dir,
         })
     }
-
-    fn render(
-        &self,
-        factor: u32,
-        antialias: &[&str],
-        threads: Option<usize>,
-    ) -> Result<PovrayRun, StudyError> {
-        Job {
-            povray: &self.povray,
-            scene: &self.scene,
-            include_paths: &self.include_paths,
-            req: self.req,
-            dir: self.dir.path(),
-        }
-        .render(factor, antialias, threads)
-    }
 }
 
 /// Stores the k render as the main RGB image, the k/2 render as layer `half`, and k and
@@ -272,16 +256,7 @@ fn validate(req: &ReferenceRequest) -> Result<(), StudyError> {
     Ok(())
 }
 
-/// One reference's fixed inputs, shared by its k and k/2 renders.
-struct Job<'a> {
-    povray: &'a Path,
-    scene: &'a Path,
-    include_paths: &'a [PathBuf],
-    req: &'a ReferenceRequest,
-    dir: &'a Path,
-}
-
-impl Job<'_> {
+impl PovrayRunner<'_> {
     /// Runs POV-Ray at `factor` times the size and returns the block-averaged image and the
     /// wall time.
     fn render(
@@ -293,12 +268,12 @@ impl Job<'_> {
         let (width, height) = (self.req.width * factor, self.req.height * factor);
         let output_name = format!("render-{factor}.exr");
         // A file left by an earlier run must not pass for this run's output.
-        let _ = std::fs::remove_file(self.dir.join(&output_name));
-        let mut command = Command::new(self.povray);
+        let _ = std::fs::remove_file(self.dir.path().join(&output_name));
+        let mut command = Command::new(&self.povray);
         // POV-Ray's default I/O policy lets it write in its working directory, so it runs
         // inside the temporary directory and writes there under a relative name.
         command
-            .current_dir(self.dir)
+            .current_dir(self.dir.path())
             .arg(format!("+I{}", self.scene.display()))
             .arg(format!("+O{output_name}"))
             .arg("+FE")
@@ -311,7 +286,7 @@ impl Job<'_> {
         if let Some(n) = threads {
             command.arg(format!("+WT{}", n.max(1)));
         }
-        for path in self.include_paths {
+        for path in &self.include_paths {
             command.arg(format!("+L{}", path.display()));
         }
         for (name, value) in &self.req.declares {
@@ -324,7 +299,7 @@ impl Job<'_> {
             source,
         })?;
         let seconds = start.elapsed().as_secs_f64();
-        let exr_path = self.dir.join(&output_name);
+        let exr_path = self.dir.path().join(&output_name);
         if !output.status.success() || !exr_path.is_file() {
             return Err(StudyError::PovrayFailed {
                 scene: self.scene.to_path_buf(),
