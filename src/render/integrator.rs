@@ -270,7 +270,19 @@ impl<'a> Integrator<'a> {
             )
         };
         let cos_i = -d.dot(n);
-        let mirror = d + 2.0 * cos_i * n;
+        let mut mirror = d + 2.0 * cos_i * n;
+        // A perturbed normal can send the mirror ray into the surface; POV-Ray then mirrors
+        // it again in the true surface (measured: the component along the geometric normal
+        // changes sign, the others keep theirs).
+        let outside = if geometric.dot(d) > 0.0 {
+            -geometric
+        } else {
+            geometric
+        };
+        let below = mirror.dot(outside);
+        if below < 0.0 {
+            mirror -= 2.0 * below * outside;
+        }
         let r = self.reflectivity(finish, cos_i, eta_from, eta_to);
         // What the layers let through (their filter and transmit), reduced by what is
         // reflected when the finish conserves energy.
