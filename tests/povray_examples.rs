@@ -41,54 +41,29 @@ const SCENES: &[(&str, Option<&str>)] = &[
     ("objects/quartic/torus.pov", None),
     ("objects/quartic/piriform.pov", None),
     // Appearance (issue 5).
-    (
-        "textures/patterns/brick.pov",
-        Some(
-            "its lower row uses the pattern as a normal (pignorm.inc); penumbra tilts normals by finite differences, which for this discontinuous pattern gives sharper, darker grooves than POV-Ray (the pigment rows match)",
-        ),
-    ),
-    (
-        "textures/patterns/gradient.pov",
-        Some(
-            "its lower row uses the pattern as a normal (pignorm.inc); penumbra tilts normals by finite differences, which for this discontinuous pattern gives sharper, darker grooves than POV-Ray (the pigment rows match)",
-        ),
-    ),
+    ("textures/patterns/brick.pov", None),
+    ("textures/patterns/gradient.pov", None),
     (
         "textures/patterns/hexagon.pov",
         Some(
-            "its lower row uses the pattern as a normal (pignorm.inc); penumbra tilts normals by finite differences, which for this discontinuous pattern gives sharper, darker grooves than POV-Ray (the pigment rows match)",
+            "sqrt(B) 0.0009, but 3 tiles fail along one groove of the normal row's box (the hexagon pattern used as a normal): POV-Ray shows a groove there that penumbra does not; the pigment row and every other groove match",
         ),
     ),
     ("textures/patterns/leopard.pov", None),
-    (
-        "textures/patterns/onion.pov",
-        Some(
-            "its lower row uses the pattern as a normal (pignorm.inc); penumbra tilts normals by finite differences, which for this discontinuous pattern gives sharper, darker grooves than POV-Ray (the pigment rows match)",
-        ),
-    ),
+    ("textures/patterns/onion.pov", None),
     ("textures/patterns/radial.pov", None),
-    (
-        "textures/patterns/spiral1.pov",
-        Some(
-            "its lower row uses the pattern as a normal (pignorm.inc); penumbra tilts normals by finite differences, which for this discontinuous pattern gives sharper, darker grooves than POV-Ray (the pigment rows match)",
-        ),
-    ),
+    ("textures/patterns/spiral1.pov", None),
     (
         "textures/patterns/spiral2.pov",
         Some(
             "spiral2's formula off the z = 0 plane is not matched yet, and its normal row has the same finite-difference difference as brick",
         ),
     ),
-    (
-        "interior/atten1.pov",
-        Some(
-            "sqrt(B) 0.0012 passes, but 6 tiles fail around the sphere with fade_power 0, whose rule (a constant half, measured) is not yet exact",
-        ),
-    ),
+    ("interior/atten1.pov", None),
     (
         "interior/iortest.pov",
         Some(
-            "the lower parts of the glass objects (glass.inc finishes, seven lights) come out darker than POV-Ray's; not yet explained",
+            "sqrt(B) 0.0035 passes, but 7 tiles fail where faces coincide: each box's top face touches its cylinder's bottom cap (y = 1, two bounded objects of one union), and POV-Ray's choice between the two at the same distance is not yet reproduced (its choice between the box bottoms and the floor plane is: the plane first)",
         ),
     ),
     ("incdemo/finish.pov", None),
