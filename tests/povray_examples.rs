@@ -73,12 +73,7 @@ const SCENES: &[(&str, Option<&str>)] = &[
             "its lower row uses the pattern as a normal (pignorm.inc); penumbra tilts normals by finite differences, which for this discontinuous pattern gives sharper, darker grooves than POV-Ray (the pigment rows match)",
         ),
     ),
-    (
-        "textures/patterns/spiral2.pov",
-        Some(
-            "spiral2's formula off the z = 0 plane is not matched yet, and its normal row has the same finite-difference difference as brick",
-        ),
-    ),
+    ("textures/patterns/spiral2.pov", None),
     (
         "interior/atten1.pov",
         Some(
