@@ -53,12 +53,7 @@ const SCENES: &[(&str, Option<&str>)] = &[
     ("textures/patterns/onion.pov", None),
     ("textures/patterns/radial.pov", None),
     ("textures/patterns/spiral1.pov", None),
-    (
-        "textures/patterns/spiral2.pov",
-        Some(
-            "spiral2's formula off the z = 0 plane is not matched yet, and its normal row has the same finite-difference difference as brick",
-        ),
-    ),
+    ("textures/patterns/spiral2.pov", None),
     ("interior/atten1.pov", None),
     (
         "interior/iortest.pov",
