@@ -26,6 +26,12 @@ PATTERNS = {
     "wrinkles": "wrinkles",
     "dents": "dents",
     "warp": "gradient x warp { turbulence 0.5 } scale 4",
+    "bozo_ng1": "bozo noise_generator 1",
+    "granite_ng1": "granite noise_generator 1",
+    "wrinkles_ng1": "wrinkles noise_generator 1",
+    "bozo_ng3": "bozo noise_generator 3",
+    "granite_ng3": "granite noise_generator 3",
+    "wrinkles_ng3": "wrinkles noise_generator 3",
 }
 SIZE = 512
 EXTENT = 32.0

@@ -3,7 +3,8 @@
 //! penumbra at the pixel centres of POV-Ray's render. The 19 quantiles (5% .. 95%) must agree
 //! within 0.03 and the radially averaged power spectrum within 20% in each octave band from
 //! 0.25 to 8 cycles per unit. POV-Ray's figures are in tests/references/noise_stats.txt,
-//! written by scripts/noise_reference.py.
+//! written by scripts/noise_reference.py. The `_ng1` and `_ng3` rows hold bozo, granite and
+//! wrinkles under `noise_generator 1` and `3`.
 //!
 //! Why these thresholds hold for a correct noise: each band averages at least ~600
 //! independent Fourier bins (two realisations: about 6% relative spread of the ratio), and

@@ -6,7 +6,7 @@ use std::f64::consts::{PI, TAU};
 
 use glam::DVec3;
 
-use super::noise::{dturbulence, noise, turbulence};
+use super::noise::{dturbulence, noise_with, turbulence};
 use crate::scene::{Pattern, PatternKind, Turbulence, Warp, Wave};
 
 /// The wrap POV-Ray uses after frequency and phase: slightly more than one, so that a
@@ -102,6 +102,20 @@ fn unit_triangle(v: f64) -> f64 {
     if f < 0.5 { 2.0 * f } else { 2.0 - 2.0 * f }
 }
 
+/// Granite and wrinkles hardly feel generator 1: povray's values under generator 1 are a
+/// linear map of those under generator 2 (quantile residuals 0.002), nothing like bozo's
+/// doubling. So they sum generator 2's noise and apply the measured map; under generator
+/// 3 they sum generator 3's noise, and the map (gain, offset) fits povray's quantiles.
+const GRANITE_GENERATOR1: (f64, f64) = (1.0168, 0.0011);
+const GRANITE_GENERATOR3: (f64, f64) = (0.882, 0.046);
+const WRINKLES_GENERATOR1: (f64, f64) = (1.0174, -0.0393);
+const WRINKLES_GENERATOR3: (f64, f64) = (0.932, 0.023);
+
+/// The noise the granite and wrinkles sums use under a generator (see above).
+fn inner_generator(generator: u8) -> u8 {
+    if generator == 3 { 3 } else { 2 }
+}
+
 fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
     match &pattern.kind {
         PatternKind::Gradient(g) => p.dot(*g),
@@ -152,32 +166,46 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
             let arg = 1.3 * scale * turbulence(p, &t) + 1.1 * p.z;
             (0.5 * ((TAU * arg).sin() + 1.0)).clamp(0.0, 1.0).powf(0.77)
         }
-        PatternKind::Bozo | PatternKind::Spotted | PatternKind::Bumps => noise(p),
+        PatternKind::Bozo | PatternKind::Spotted | PatternKind::Bumps => {
+            noise_with(p, pattern.noise_generator)
+        }
         PatternKind::Dents => {
-            let n = noise(p);
+            let n = noise_with(p, pattern.noise_generator);
             n * n * n
         }
         PatternKind::Granite => {
             // Six octaves of |0.5 - noise| at 4x frequency; the gain 2 is fitted to
             // povray's granite quantiles.
+            let inner = inner_generator(pattern.noise_generator);
             let mut sum = 0.0;
             let mut freq = 1.0;
             for _ in 0..6 {
-                sum += (0.5 - noise(4.0 * p * freq)).abs() / freq;
+                sum += (0.5 - noise_with(4.0 * p * freq, inner)).abs() / freq;
                 freq *= 2.0;
             }
-            2.0 * sum
+            let (gain, offset) = match pattern.noise_generator {
+                1 => GRANITE_GENERATOR1,
+                3 => GRANITE_GENERATOR3,
+                _ => (1.0, 0.0),
+            };
+            (gain * 2.0 * sum + offset).max(0.0)
         }
         PatternKind::Wrinkles => {
             // Ten octaves of noise around 0.5, weights halving: povray's wrinkles is
             // centred on 0.5 and 15% wider than bozo, which this sum reproduces.
+            let inner = inner_generator(pattern.noise_generator);
             let mut sum = 0.5;
             let mut f = 1.0;
             for _ in 0..10 {
-                sum += (noise(p * f) - 0.5) / f;
+                sum += (noise_with(p * f, inner) - 0.5) / f;
                 f *= 2.0;
             }
-            sum.clamp(0.0, 1.0)
+            let (gain, offset) = match pattern.noise_generator {
+                1 => WRINKLES_GENERATOR1,
+                3 => WRINKLES_GENERATOR3,
+                _ => (1.0, 0.0),
+            };
+            (gain * sum + offset).clamp(0.0, 1.0)
         }
         PatternKind::Ripples => {
             // One wave source at the origin: (1 + sin(2 pi r)) / 2 around it.

@@ -1,12 +1,25 @@
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use super::pattern::{pattern_index, pattern_value};
 use std::f64::consts::{PI, TAU};
 
+use crate::geometry::TexturePoint;
 use crate::scene::{Colour, ImageMap, MapType, Pigment, PigmentKind};
 
-/// The pigment's colour at a world-space point.
-pub fn evaluate_pigment(pigment: &Pigment, world: DVec3) -> Colour {
+/// The pigment's colour at a point: a world-space point, or a surface point that also
+/// carries the surface's (u, v) for pigments with `uv_mapping`.
+pub fn evaluate_pigment(pigment: &Pigment, at: impl Into<TexturePoint>) -> Colour {
+    let at = at.into();
+    pigment_at(pigment, at.world, at.uv)
+}
+
+fn pigment_at(pigment: &Pigment, world: DVec3, uv: DVec2) -> Colour {
+    // A uv-mapped pigment and everything inside it see the point (u, v, 0).
+    let world = if pigment.uv_mapping {
+        uv.extend(0.0)
+    } else {
+        world
+    };
     match &pigment.kind {
         PigmentKind::Solid(c) => *c,
         PigmentKind::List { pattern, entries } => {
@@ -15,7 +28,7 @@ pub fn evaluate_pigment(pigment: &Pigment, world: DVec3) -> Colour {
             }
             let p = pigment.transform.inverse_point(world);
             let index = pattern_index(pattern, p).min(entries.len() - 1);
-            evaluate_pigment(&entries[index], world)
+            pigment_at(&entries[index], world, uv)
         }
         PigmentKind::ColourMap { pattern, map } => {
             let p = pigment.transform.inverse_point(world);
@@ -31,10 +44,10 @@ pub fn evaluate_pigment(pigment: &Pigment, world: DVec3) -> Colour {
             let p = pigment.transform.inverse_point(world);
             let v = pattern_value(pattern, p);
             match blend_position(map, v, |e| e.0) {
-                Blend::One(i) => evaluate_pigment(&map[i].1, world),
+                Blend::One(i) => pigment_at(&map[i].1, world, uv),
                 Blend::Two(i, t) => mix(
-                    &evaluate_pigment(&map[i].1, world),
-                    &evaluate_pigment(&map[i + 1].1, world),
+                    &pigment_at(&map[i].1, world, uv),
+                    &pigment_at(&map[i + 1].1, world, uv),
                     t,
                 ),
                 Blend::None => Colour::BLACK,
@@ -150,6 +163,7 @@ mod tests {
                 entries: vec![Pigment::solid(a), Pigment::solid(b)],
             },
             transform: Transform::IDENTITY,
+            uv_mapping: false,
         };
         assert_eq!(evaluate_pigment(&pig, DVec3::new(0.5, 0.5, 0.5)), a);
         assert_eq!(evaluate_pigment(&pig, DVec3::new(1.5, 0.5, 0.5)), b);
@@ -172,6 +186,7 @@ mod tests {
                 map: vec![(0.2, c1), (0.6, c2), (0.6, Colour::BLACK)],
             },
             transform: Transform::IDENTITY,
+            uv_mapping: false,
         };
         let c = evaluate_pigment(&pig, DVec3::new(0.4, 0.0, 0.0));
         assert!((c.rgb.x - 0.5).abs() < 1e-9 && (c.transmit - 0.5).abs() < 1e-9);

@@ -4,7 +4,8 @@
 
 use glam::DVec3;
 
-use crate::scene::{Colour, Finish, Pigment, PigmentKind, Texture};
+use crate::geometry::TexturePoint;
+use crate::scene::{Colour, Finish, Pigment, PigmentKind, Texture, TextureMap};
 
 use super::evaluate_pigment;
 use super::normal::perturb;
@@ -61,7 +62,8 @@ impl<'a> Layers<'a> {
 /// it. A patterned texture (texture_map) contributes its entry at the point; between two
 /// entries the colours blend and the finish of the nearer entry is used (exact when the
 /// entries share a finish, which is how texture maps are mostly written).
-pub fn texture_layers<'a>(texture: &'a Texture, p: DVec3) -> Layers<'a> {
+pub fn texture_layers<'a>(texture: &'a Texture, at: impl Into<TexturePoint>) -> Layers<'a> {
+    let p = at.into();
     let mut layers = Layers::default();
     push_texture(&mut layers, texture, p, 0);
     for below in &texture.below {
@@ -73,11 +75,11 @@ pub fn texture_layers<'a>(texture: &'a Texture, p: DVec3) -> Layers<'a> {
 /// Texture maps nest; beyond this depth a texture shows its own pigment.
 const MAX_NESTING: u32 = 8;
 
-fn push_texture<'a>(layers: &mut Layers<'a>, t: &'a Texture, p: DVec3, depth: u32) {
+fn push_texture<'a>(layers: &mut Layers<'a>, t: &'a Texture, p: TexturePoint, depth: u32) {
     if let Some(map) = &t.map
         && depth < MAX_NESTING
     {
-        let q = map.transform.inverse_point(p);
+        let q = map.transform.inverse_point(map_point(map, p));
         let v = pattern_value(&map.pattern, q);
         match blend_position(&map.entries, v, |e| e.0) {
             Blend::One(i) => push_texture(layers, &map.entries[i].1, p, depth + 1),
@@ -108,11 +110,12 @@ fn push_texture<'a>(layers: &mut Layers<'a>, t: &'a Texture, p: DVec3, depth: u3
 /// The shading normal after the texture's normal perturbation: `n` is the unit normal
 /// facing the viewer. The top layer's normal (or that of the texture-map entry at the
 /// point) applies.
-pub fn perturbed_normal(texture: &Texture, p: DVec3, n: DVec3) -> DVec3 {
+pub fn perturbed_normal(texture: &Texture, at: impl Into<TexturePoint>, n: DVec3) -> DVec3 {
+    let p = at.into();
     let mut t = texture;
     for _ in 0..MAX_NESTING {
         let Some(map) = &t.map else { break };
-        let v = pattern_value(&map.pattern, map.transform.inverse_point(p));
+        let v = pattern_value(&map.pattern, map.transform.inverse_point(map_point(map, p)));
         t = match blend_position(&map.entries, v, |e| e.0) {
             Blend::One(i) => &map.entries[i].1,
             Blend::Two(i, w) => &map.entries[if w < 0.5 { i } else { i + 1 }].1,
@@ -120,8 +123,17 @@ pub fn perturbed_normal(texture: &Texture, p: DVec3, n: DVec3) -> DVec3 {
         };
     }
     match &t.normal {
-        Some(normal) => perturb(normal, p, n),
+        Some(normal) => perturb(normal, p.world, n),
         None => n,
+    }
+}
+
+/// Where a texture map's pattern is evaluated: the world point, or (u, v, 0).
+fn map_point(map: &TextureMap, p: TexturePoint) -> DVec3 {
+    if map.uv_mapping {
+        p.uv.extend(0.0)
+    } else {
+        p.world
     }
 }
 
@@ -158,7 +170,7 @@ pub fn may_transmit(texture: &Texture) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{Pattern, PatternKind, TextureMap, Transform};
+    use crate::scene::{Pattern, PatternKind, Transform};
 
     #[test]
     fn texture_map_picks_and_blends_entries() {
@@ -175,6 +187,7 @@ mod tests {
                 pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
                 transform: Transform::IDENTITY,
                 entries: vec![(0.0, red), (1.0, blue)],
+                uv_mapping: false,
             })),
             ..Texture::default()
         };

@@ -13,4 +13,6 @@ pub use bvh::Bvh;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use transform::Transform;
-pub use world::{CsgOp, Hit, Item, Primitive, SurfacePoint, World, WorldBuilder, flags};
+pub use world::{
+    CsgOp, Hit, Item, Primitive, SurfacePoint, TexturePoint, World, WorldBuilder, flags,
+};

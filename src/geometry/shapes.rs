@@ -2,6 +2,8 @@
 //! data would make every enum value large (quadrics, triangles, polygons) keep it in side
 //! tables and hold an index, so the common spheres and boxes stay compact in the cache.
 
+use std::f64::consts::{PI, TAU};
+
 use glam::{DVec2, DVec3};
 
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
@@ -273,6 +275,63 @@ impl ShapeKind {
             }
         }
         self.normal(p, tables)
+    }
+
+    /// The surface's own (u, v) at an object-space point on it, for `uv_mapping`, as
+    /// measured with povray (`uv_mapping gradient x` shows u, `gradient y` v):
+    /// - sphere: u = atan2(z, x) / 2 pi (0 on +x, 1/4 on +z), v = 1/2 + asin(y) / pi;
+    /// - box: the six faces unfolded into a cross, each face a quarter wide and a third high,
+    ///   with s = (p - min) / (max - min): the middle row holds -x (u = s_z / 4), +z
+    ///   (1/4 + s_x / 4), +x (3/4 - s_z / 4) and -z (1 - s_x / 4) at v = (1 + s_y) / 3;
+    ///   +y sits above +z (v = 1 - s_z / 3) and -y below it (v = s_z / 3), so the cross
+    ///   folds back into the box edge to edge;
+    /// - torus: u = 1/2 - atan2(z, x) / 2 pi around y, v = 1/2 + theta / 2 pi with theta the
+    ///   angle round the tube, 0 on the outer equator, pi/2 on top.
+    ///
+    /// Other shapes have none: povray then uses the world x and y of the point (`None`).
+    pub fn uv(&self, p: DVec3) -> Option<DVec2> {
+        match *self {
+            ShapeKind::Sphere { center, .. } => {
+                let d = (p - center).normalize_or(DVec3::Y);
+                let u = (d.z.atan2(d.x) / TAU).rem_euclid(1.0);
+                Some(DVec2::new(u, 0.5 + d.y.clamp(-1.0, 1.0).asin() / PI))
+            }
+            ShapeKind::Box { min, max } => {
+                let size = (max - min).max(DVec3::splat(1e-300));
+                let s = ((p - min) / size).clamp(DVec3::ZERO, DVec3::ONE);
+                // The face: the coordinate nearest its bound, relative to the box size.
+                let d = (s - DVec3::splat(0.5)).abs();
+                let (u, v) = if d.x >= d.y && d.x >= d.z {
+                    let v = (1.0 + s.y) / 3.0;
+                    if s.x < 0.5 {
+                        (s.z / 4.0, v)
+                    } else {
+                        (0.75 - s.z / 4.0, v)
+                    }
+                } else if d.z >= d.y {
+                    let v = (1.0 + s.y) / 3.0;
+                    if s.z < 0.5 {
+                        (1.0 - s.x / 4.0, v)
+                    } else {
+                        (0.25 + s.x / 4.0, v)
+                    }
+                } else {
+                    let u = 0.25 + s.x / 4.0;
+                    if s.y < 0.5 {
+                        (u, s.z / 3.0)
+                    } else {
+                        (u, 1.0 - s.z / 3.0)
+                    }
+                };
+                Some(DVec2::new(u, v))
+            }
+            ShapeKind::Torus { major, .. } => {
+                let u = (0.5 - p.z.atan2(p.x) / TAU).rem_euclid(1.0);
+                let theta = p.y.atan2(p.x.hypot(p.z) - major);
+                Some(DVec2::new(u, 0.5 + theta / TAU))
+            }
+            _ => None,
+        }
     }
 
     /// Whether a point is inside the solid, POV-Ray's notion used by CSG. Points on the
@@ -626,6 +685,50 @@ mod tests {
             let err = ((ray.at(t) - c).length() - r).abs();
             assert!(err <= 8.0 * f64::EPSILON * dist.max(r), "{dist} {r}: {err}");
         }
+    }
+
+    #[test]
+    fn uv_coordinates_match_povray() {
+        let close = |a: Option<DVec2>, u: f64, v: f64| {
+            let a = a.expect("uv");
+            (a.x - u).abs() < 1e-9 && (a.y - v).abs() < 1e-9
+        };
+        // Sphere (measured from -z and +z): u = 3/4 facing -z, 1/4 facing +z, 1/2 on -x.
+        let s = sphere(DVec3::new(1.0, 2.0, 3.0), 2.0);
+        let c = DVec3::new(1.0, 2.0, 3.0);
+        assert!(close(s.uv(c - 2.0 * DVec3::Z), 0.75, 0.5));
+        assert!(close(s.uv(c + 2.0 * DVec3::Z), 0.25, 0.5));
+        assert!(close(s.uv(c - 2.0 * DVec3::X), 0.5, 0.5));
+        assert!(close(s.uv(c + 2.0 * DVec3::Y), 0.0, 1.0));
+        // Box <0.1,0.2,0.05> - <0.9,0.6,0.95> (measured faces, s = (p - min) / size).
+        let b = ShapeKind::Box {
+            min: DVec3::new(0.1, 0.2, 0.05),
+            max: DVec3::new(0.9, 0.6, 0.95),
+        };
+        let at = |s: DVec3| DVec3::new(0.1, 0.2, 0.05) + s * DVec3::new(0.8, 0.4, 0.9);
+        assert!(close(b.uv(at(DVec3::new(0.0, 0.5, 0.2))), 0.05, 0.5)); // -x
+        assert!(close(b.uv(at(DVec3::new(0.4, 0.5, 1.0))), 0.35, 0.5)); // +z
+        assert!(close(b.uv(at(DVec3::new(1.0, 0.5, 0.2))), 0.7, 0.5)); // +x
+        assert!(close(b.uv(at(DVec3::new(0.4, 0.5, 0.0))), 0.9, 0.5)); // -z
+        assert!(close(b.uv(at(DVec3::new(0.4, 1.0, 0.3))), 0.35, 0.9)); // +y
+        assert!(close(b.uv(at(DVec3::new(0.4, 0.0, 0.3))), 0.35, 0.1)); // -y
+        // Torus (measured): u = 1/2 - atan2(z, x) / 2 pi, so 3/4 facing -z; v = 1/2 on the
+        // outer equator, 3/4 on top of the tube, 1/4 below it.
+        let t = ShapeKind::Torus {
+            major: 0.3,
+            minor: 0.1,
+        };
+        assert!(close(t.uv(DVec3::new(0.0, 0.0, -0.4)), 0.75, 0.5));
+        assert!(close(t.uv(DVec3::new(0.3, 0.1, 0.0)), 0.5, 0.75));
+        assert!(close(t.uv(DVec3::new(0.3, -0.1, 0.0)), 0.5, 0.25));
+        assert!(
+            ShapeKind::Disc {
+                radius: 1.0,
+                hole: 0.0
+            }
+            .uv(DVec3::ZERO)
+            .is_none()
+        );
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! over the bounded top-level items, and the unbounded ones (planes, quadrics, inverses)
 //! kept aside.
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform};
 
@@ -13,6 +13,9 @@ pub mod flags {
     pub const NO_REFLECTION: u8 = 4;
     /// Inside and outside swapped (POV-Ray's `inverse`).
     pub const INVERSE: u8 = 8;
+    /// The material reads the surface's own (u, v) (`uv_mapping`); only then is it
+    /// computed, so other scenes pay nothing for it.
+    pub const UV: u8 = 16;
 }
 
 const NO_TRANSFORM: u32 = u32::MAX;
@@ -67,6 +70,36 @@ pub struct SurfacePoint {
     /// The normal for shading (interpolated on smooth triangles), unit, on the same side.
     pub shading_normal: DVec3,
     pub material: u32,
+    /// The surface's own (u, v) where the material asks for it (`flags::UV`), else the
+    /// world x and y, which is what povray uses for shapes without a uv mapping.
+    pub uv: DVec2,
+}
+
+/// Where a texture is looked up: the world point, and the surface's (u, v) for patterns
+/// with `uv_mapping`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexturePoint {
+    pub world: DVec3,
+    pub uv: DVec2,
+}
+
+impl From<DVec3> for TexturePoint {
+    /// A point with no surface behind it: uv falls back to x and y as in povray.
+    fn from(world: DVec3) -> TexturePoint {
+        TexturePoint {
+            world,
+            uv: world.truncate(),
+        }
+    }
+}
+
+impl From<&SurfacePoint> for TexturePoint {
+    fn from(s: &SurfacePoint) -> TexturePoint {
+        TexturePoint {
+            world: s.point,
+            uv: s.uv,
+        }
+    }
 }
 
 #[derive(Clone, Debug, Default)]
@@ -506,6 +539,7 @@ impl World {
                 t.normal(p.shape.shading_normal(local, &self.tables)),
             )
         };
+        let uv = self.uv(p, point);
         let sign = if hit.flipped { -1.0 } else { 1.0 };
         let normal = normal.normalize_or(DVec3::Y) * sign;
         let mut shading_normal = shading.normalize_or(normal) * sign;
@@ -517,7 +551,31 @@ impl World {
             normal,
             shading_normal,
             material: p.material,
+            uv,
         }
+    }
+
+    /// The texture lookup point of a hit, without the normals `surface` computes.
+    pub fn texture_point(&self, ray: &Ray, hit: &Hit) -> TexturePoint {
+        let point = ray.at(hit.t);
+        TexturePoint {
+            world: point,
+            uv: self.uv(&self.primitives[hit.primitive as usize], point),
+        }
+    }
+
+    /// The primitive's own (u, v) at a world point on it, from its untransformed surface.
+    #[inline]
+    fn uv(&self, p: &Primitive, point: DVec3) -> DVec2 {
+        if p.flags & flags::UV == 0 {
+            return point.truncate();
+        }
+        let local = if p.transform == NO_TRANSFORM {
+            point
+        } else {
+            self.transforms[p.transform as usize].inverse_point(point)
+        };
+        p.shape.uv(local).unwrap_or(point.truncate())
     }
 
     /// The deepest leaf's depth in the BVH (0 for a single leaf or an empty tree).

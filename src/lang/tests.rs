@@ -1258,3 +1258,41 @@ fn materials_and_empty_csg() {
     assert_eq!(s.objects[0].interior.map(|i| i.ior), Some(1.5));
     assert!(s.objects[0].texture.is_some());
 }
+
+#[test]
+fn uv_mapping_keeps_only_the_transforms_written_inside() {
+    // Measured with povray on a sphere: u doubles for A and B, is unchanged for C and D.
+    let u_scale = |src: &str| {
+        let s = load(src).scene;
+        let pig = &s.objects[0].texture.as_ref().unwrap().pigment;
+        assert!(pig.uv_mapping, "{src}");
+        pig.transform.inverse_point(DVec3::new(0.25, 0.0, 0.0)).x / 0.25
+    };
+    let a = u_scale("sphere { 0, 1 texture { uv_mapping pigment { gradient x } scale 0.5 } }");
+    let b = u_scale("sphere { 0, 1 pigment { uv_mapping gradient x scale 0.5 } }");
+    let c = u_scale("sphere { 0, 1 texture { pigment { uv_mapping gradient x } scale 0.5 } }");
+    let d = u_scale("sphere { 0, 1 pigment { uv_mapping gradient x } scale 0.5 rotate y*30 }");
+    assert!(
+        (a - 2.0).abs() < 1e-12 && (b - 2.0).abs() < 1e-12,
+        "{a} {b}"
+    );
+    assert!(
+        (c - 1.0).abs() < 1e-12 && (d - 1.0).abs() < 1e-12,
+        "{c} {d}"
+    );
+}
+
+#[test]
+fn global_noise_generator_is_the_patterns_default() {
+    let s = load(
+        "global_settings { noise_generator 3 }
+         plane { z, 0 pigment { bozo } }
+         plane { z, 0 pigment { bozo noise_generator 1 } }",
+    )
+    .scene;
+    let generator = |i: usize| match &s.objects[i].texture.as_ref().unwrap().pigment.kind {
+        PigmentKind::ColourMap { pattern, .. } => pattern.noise_generator,
+        _ => panic!("pattern"),
+    };
+    assert_eq!((generator(0), generator(1)), (3, 1));
+}

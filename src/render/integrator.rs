@@ -235,8 +235,8 @@ impl<'a> Integrator<'a> {
         } else {
             surface.shading_normal
         };
-        let n = perturbed_normal(texture, p, facing);
-        let layers = texture_layers(texture, p);
+        let n = perturbed_normal(texture, surface, facing);
+        let layers = texture_layers(texture, surface);
         let mut colour = DVec3::ZERO;
         // Layers composite top first: each lets through what its own opacity does not cover.
         let mut through = DVec3::ONE;
@@ -589,7 +589,8 @@ impl<'a> Integrator<'a> {
                 filter = DVec3::ZERO;
                 return false;
             }
-            for layer in texture_layers(&material.texture, ray.at(hit.t)).iter() {
+            let at = scene.world.texture_point(ray, hit);
+            for layer in texture_layers(&material.texture, at).iter() {
                 let c = layer.colour;
                 filter *= c.rgb * c.filter + DVec3::splat(c.transmit);
             }

@@ -206,7 +206,13 @@ impl Builder {
                     None => object.transform,
                 };
                 let material = self.material(looks);
-                self.world.primitive(kind, &transform, material, mask(f))
+                let uv = if looks.texture.uses_uv() {
+                    flags::UV
+                } else {
+                    0
+                };
+                self.world
+                    .primitive(kind, &transform, material, mask(f) | uv)
             }
         };
         let item = if clipped {

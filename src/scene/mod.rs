@@ -71,6 +71,9 @@ pub struct GlobalSettings {
     /// unbiased Russian roulette, whose expectation is the uncut, depth-capped tree.
     pub adc_bailout: f64,
     pub ambient_light: DVec3,
+    /// `noise_generator` in global_settings: the default for patterns that name none
+    /// (applies to patterns read after it).
+    pub noise_generator: u8,
 }
 
 impl Default for GlobalSettings {
@@ -80,6 +83,7 @@ impl Default for GlobalSettings {
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
+            noise_generator: 2,
         }
     }
 }

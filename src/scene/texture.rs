@@ -22,7 +22,9 @@ impl Texture {
         if let Some(n) = &mut self.normal {
             n.transform_by(t);
         }
-        if let Some(m) = &mut self.map {
+        if let Some(m) = &mut self.map
+            && !m.uv_mapping
+        {
             m.transform = m.transform.then(t);
             for (_, e) in &mut m.entries {
                 e.transform_by(t);
@@ -32,6 +34,16 @@ impl Texture {
             b.transform_by(t);
         }
     }
+
+    /// Whether any part of the texture reads the surface's (u, v).
+    pub fn uses_uv(&self) -> bool {
+        self.pigment.uses_uv()
+            || self
+                .map
+                .as_ref()
+                .is_some_and(|m| m.uv_mapping || m.entries.iter().any(|(_, e)| e.uses_uv()))
+            || self.below.iter().any(Texture::uses_uv)
+    }
 }
 
 /// `texture_map { [v texture {...}] ... }` under a pattern.
@@ -40,6 +52,8 @@ pub struct TextureMap {
     pub pattern: Pattern,
     pub transform: Transform,
     pub entries: Vec<(f64, Texture)>,
+    /// `texture { uv_mapping pattern texture_map {...} }`: the pattern reads (u, v, 0).
+    pub uv_mapping: bool,
 }
 
 /// POV-Ray's wave types, applied to a pattern's value after frequency and phase.
@@ -232,6 +246,11 @@ pub struct ImageMap {
 pub struct Pigment {
     pub kind: PigmentKind,
     pub transform: Transform,
+    /// `uv_mapping`: the pattern space is the surface's (u, v, 0), not the world. The
+    /// transforms written inside the pigment (or inside a `texture { uv_mapping ... }`)
+    /// move the pattern in uv space; those of the object and of an enclosing texture do
+    /// not (measured: `scale 0.5` on such a sphere or its outer texture leaves u as it is).
+    pub uv_mapping: bool,
 }
 
 impl Default for Pigment {
@@ -246,10 +265,14 @@ impl Pigment {
         Pigment {
             kind: PigmentKind::Solid(c),
             transform: Transform::IDENTITY,
+            uv_mapping: false,
         }
     }
 
     pub fn transform_by(&mut self, t: &Transform) {
+        if self.uv_mapping {
+            return;
+        }
         self.transform = self.transform.then(t);
         match &mut self.kind {
             PigmentKind::List { entries, .. } => {
@@ -264,6 +287,16 @@ impl Pigment {
             }
             _ => {}
         }
+    }
+
+    /// Whether the pigment, or any pigment inside it, reads the surface's (u, v).
+    pub fn uses_uv(&self) -> bool {
+        self.uv_mapping
+            || match &self.kind {
+                PigmentKind::List { entries, .. } => entries.iter().any(Pigment::uses_uv),
+                PigmentKind::PigmentMap { map, .. } => map.iter().any(|(_, p)| p.uses_uv()),
+                _ => false,
+            }
     }
 
     pub fn pattern_mut(&mut self) -> Option<&mut Pattern> {

@@ -561,7 +561,11 @@ impl Evaluator<'_> {
                     let (c, _) = self.colour()?;
                     self.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);
                 }
-                "max_intersections" | "number_of_waves" | "noise_generator" => {
+                "noise_generator" => {
+                    let g = self.float()?;
+                    self.scene.settings.noise_generator = g.clamp(1.0, 3.0) as u8;
+                }
+                "max_intersections" | "number_of_waves" => {
                     self.float()?;
                 }
                 "charset" => {

@@ -34,7 +34,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "square",
     "tiling",
     "triangular",
-    "uv_mapping",
     "object",
     "material_map",
     "bump_map",
@@ -77,6 +76,13 @@ enum Modified<'a> {
 }
 
 impl Evaluator<'_> {
+    /// A pattern with the global `noise_generator` as its default.
+    fn new_pattern(&self, kind: PatternKind) -> Pattern {
+        let mut p = Pattern::new(kind);
+        p.noise_generator = self.scene.settings.noise_generator;
+        p
+    }
+
     /// `{ ... }` after `pigment`.
     pub(super) fn pigment_body(&mut self, base: Pigment) -> R<Pigment> {
         let open = self.expect(Punct::LBrace, "after `pigment`")?;
@@ -90,9 +96,15 @@ impl Evaluator<'_> {
 
     fn pigment_items(&mut self, mut p: Pigment, close: Punct) -> R<Pigment> {
         let mut first = true;
+        // Set when the block closes, so that the transforms written inside still move the
+        // pattern (in uv space) while those applied later do not.
+        let mut uv_mapping = false;
         loop {
             let tok = self.peek()?;
             if tok.is_punct(close) {
+                if uv_mapping {
+                    p.uv_mapping = true;
+                }
                 return Ok(p);
             }
             if let Some(t) = self.transform_modifier()? {
@@ -105,12 +117,13 @@ impl Evaluator<'_> {
                 Some(w) if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
-                    let pattern = Pattern::new(kind);
+                    let pattern = self.new_pattern(kind);
                     p = if let Some(n) = pattern.kind.list_size() {
                         let entries = self.list_entries(n)?;
                         Pigment {
                             kind: PigmentKind::List { pattern, entries },
                             transform: Transform::IDENTITY,
+                            uv_mapping: false,
                         }
                     } else {
                         Pigment {
@@ -119,6 +132,7 @@ impl Evaluator<'_> {
                                 map: vec![(0.0, Colour::BLACK), (1.0, Colour::rgb(1.0, 1.0, 1.0))],
                             },
                             transform: Transform::IDENTITY,
+                            uv_mapping: false,
                         }
                     };
                 }
@@ -149,7 +163,13 @@ impl Evaluator<'_> {
                     p = Pigment {
                         kind: PigmentKind::Image(self.image_map_body()?),
                         transform: Transform::IDENTITY,
+                        uv_mapping: false,
                     };
+                }
+                Some("uv_mapping") => {
+                    self.next()?;
+                    uv_mapping = true;
+                    continue;
                 }
                 Some("quick_color" | "quick_colour") => {
                     self.next()?;
@@ -537,7 +557,7 @@ impl Evaluator<'_> {
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
-                    let mut normal = Normal::new(Pattern::new(kind));
+                    let mut normal = Normal::new(self.new_pattern(kind));
                     // The amount follows the pattern, after a comma when the pattern took a
                     // vector or a number.
                     self.eat(Punct::Comma)?;
@@ -807,9 +827,13 @@ impl Evaluator<'_> {
     }
 
     fn texture_items(&mut self, mut t: Texture, close: Punct) -> R<Texture> {
+        let mut uv_mapping = false;
         loop {
             let tok = self.peek()?;
             if tok.is_punct(close) {
+                if uv_mapping {
+                    mark_uv_mapped(&mut t);
+                }
                 return Ok(t);
             }
             if let Some(tr) = self.transform_modifier()? {
@@ -844,12 +868,17 @@ impl Evaluator<'_> {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
                     t.map = Some(Box::new(TextureMap {
-                        pattern: Pattern::new(kind),
+                        pattern: self.new_pattern(kind),
                         transform: Transform::IDENTITY,
                         entries: Vec::new(),
+                        uv_mapping: false,
                     }));
                 }
-                "material_map" | "image_map" | "uv_mapping" => {
+                "uv_mapping" => {
+                    self.next()?;
+                    uv_mapping = true;
+                }
+                "material_map" | "image_map" => {
                     return Err(self.unsupported(&tok, &word));
                 }
                 w if t.map.is_some()
@@ -879,6 +908,18 @@ impl Evaluator<'_> {
                     _ => return Err(self.stray_in_block(&tok, "the texture")),
                 },
             }
+        }
+    }
+}
+
+/// `texture { uv_mapping ... }`: the texture's pigments (and its texture map's pattern)
+/// read the surface's (u, v) from here on.
+fn mark_uv_mapped(t: &mut Texture) {
+    t.pigment.uv_mapping = true;
+    if let Some(m) = &mut t.map {
+        m.uv_mapping = true;
+        for (_, e) in &mut m.entries {
+            mark_uv_mapped(e);
         }
     }
 }
@@ -1038,6 +1079,7 @@ impl Evaluator<'_> {
                 map,
             },
             transform: Transform::IDENTITY,
+            uv_mapping: false,
         })
     }
 }
