@@ -9,7 +9,7 @@
 use glam::DVec3;
 
 use crate::appearance::finish::{
-    diffuse_factor, metallic_tint, phong_factor, reflectivity, specular_factor,
+    diffuse_term, metallic_tint, phong_factor, reflectivity, specular_factor,
 };
 use crate::appearance::{evaluate_pigment, perturbed_normal, texture_layers};
 use crate::geometry::{Ray, SurfacePoint, flags, offset_point};
@@ -266,7 +266,7 @@ impl<'a> Integrator<'a> {
                 break;
             }
         }
-        let Some((_, finish)) = top else {
+        let Some((top_colour, finish)) = top else {
             return colour;
         };
         if path.level >= scene.settings.max_trace_level {
@@ -296,7 +296,9 @@ impl<'a> Integrator<'a> {
         if below < 0.0 {
             mirror -= 2.0 * below * outside;
         }
-        let r = self.reflectivity(finish, cos_i, eta_from, eta_to);
+        // `reflection { metallic }` tints the reflection as `metallic` tints highlights.
+        let r = self.reflectivity(finish, cos_i, eta_from, eta_to)
+            * metallic_tint(finish.reflection.metallic, top_colour.rgb, cos_i);
         let eta = eta_from / eta_to;
         let straight = (eta - 1.0).abs() < 1e-12;
         let refracted = if straight {
@@ -554,8 +556,14 @@ impl<'a> Integrator<'a> {
                 }
                 light_colour *= filter;
             }
-            let diffuse = diffuse_factor(finish.diffuse, finish.brilliance, n_dot_l);
-            colour += c * light_colour * (diffuse * att);
+            let diffuse = diffuse_term(
+                finish.diffuse,
+                finish.brilliance,
+                n_dot_l,
+                att,
+                finish.crand,
+            );
+            colour += c * light_colour * diffuse;
             if !light.shadowless {
                 let highlight = phong_factor(finish.phong, finish.phong_size, n, d, l)
                     + specular_factor(finish.specular, finish.roughness, n, d, l);

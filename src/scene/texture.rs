@@ -383,7 +383,8 @@ pub struct Finish {
     pub metallic: f64,
     pub reflection: Reflection,
     pub conserve_energy: bool,
-    /// `crand`: a random amount subtracted per sample (POV-Ray: colour -= crand * random).
+    /// `crand`: POV-Ray darkens each light's diffuse part by `crand * u`, u uniform; penumbra
+    /// subtracts its mean (see `diffuse_term`).
     pub crand: f64,
     /// `fresnel` in the finish (POV-Ray 3.7): also attenuates transmitted light by 1 - R.
     pub fresnel: bool,
