@@ -112,6 +112,21 @@ fn unit(h: u32) -> f64 {
 /// Value-gradient noise: each lattice corner carries a random value and a random gradient
 /// (components uniform in [-1, 1]), blended with the cubic s-curve.
 pub fn value_gradient_noise(p: DVec3) -> f64 {
+    value_gradient_noise_seeded(p, 0x5eed_0001)
+}
+
+/// Three independent value-gradient noises: the vector that perturbs `bumps`, `dents` and
+/// `wrinkles` normals. With the scalar noise's construction, each component has the
+/// spectrum of POV-Ray's noise, as POV-Ray's vector noise does (docs/appearance.md).
+pub fn value_gradient_vector(p: DVec3) -> DVec3 {
+    DVec3::new(
+        value_gradient_noise_seeded(p, 0x0bad_5eed),
+        value_gradient_noise_seeded(p, 0x1dea_5eed),
+        value_gradient_noise_seeded(p, 0x2fab_5eed),
+    )
+}
+
+fn value_gradient_noise_seeded(p: DVec3, seed: u32) -> f64 {
     if !p.is_finite() {
         return 0.0;
     }
@@ -125,7 +140,7 @@ pub fn value_gradient_noise(p: DVec3) -> f64 {
     let mut sum = 0.0;
     for corner in 0..8 {
         let (dx, dy, dz) = (corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-        let h = lattice_hash(i + dx, j + dy, k + dz, 0x5eed_0001);
+        let h = lattice_hash(i + dx, j + dy, k + dz, seed);
         let d = f - DVec3::new(dx as f64, dy as f64, dz as f64);
         let value = VALUE_WEIGHT * unit(hash(h ^ 0x68e3_1da4))
             + unit(hash(h ^ 0xb529_7a4d)) * d.x
