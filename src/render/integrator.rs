@@ -283,19 +283,12 @@ impl<'a> Integrator<'a> {
             )
         };
         let cos_i = -d.dot(n);
-        let mut mirror = d + 2.0 * cos_i * n;
-        // A perturbed normal can send the mirror ray into the surface; POV-Ray then mirrors
-        // it again in the true surface (measured: the component along the geometric normal
-        // changes sign, the others keep theirs).
         let outside = if geometric.dot(d) > 0.0 {
             -geometric
         } else {
             geometric
         };
-        let below = mirror.dot(outside);
-        if below < 0.0 {
-            mirror -= 2.0 * below * outside;
-        }
+        let mirror = mirror_direction(d, n, outside);
         // `reflection { metallic }` tints the reflection as `metallic` tints highlights.
         let r = self.reflectivity(finish, cos_i, eta_from, eta_to)
             * metallic_tint(finish.reflection.metallic, top_colour.rgb, cos_i);
@@ -664,6 +657,24 @@ pub fn refract(d: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
 }
 
 /// Interior fade over `distance` inside an object.
+/// The mirror direction of `d` in the shading normal `n` (facing the ray), kept outside the
+/// true surface whose normal facing the ray is `outside`. A perturbed normal can send the
+/// mirror ray into the surface. POV-Ray then mirrors it again in the true surface (measured:
+/// the component along the geometric normal changes sign, the others keep theirs), unless
+/// the ray also lies behind the perturbed normal (the normal was tilted past the ray): then
+/// it reflects `d` in the true surface alone (measured: exactly the unperturbed direction).
+fn mirror_direction(d: DVec3, n: DVec3, outside: DVec3) -> DVec3 {
+    let mirror = d - 2.0 * d.dot(n) * n;
+    let below = mirror.dot(outside);
+    if below >= 0.0 {
+        mirror
+    } else if mirror.dot(n) < 0.0 {
+        d - 2.0 * d.dot(outside) * outside
+    } else {
+        mirror - 2.0 * below * outside
+    }
+}
+
 fn fade(material: &Material, distance: f64) -> DVec3 {
     let colour = material.interior.fade_colour;
     let ratio = distance / material.interior.fade_distance;
@@ -681,6 +692,26 @@ fn fade(material: &Material, distance: f64) -> DVec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn mirror_rays_stay_outside_the_true_surface() {
+        let d = DVec3::new(0.0, -1.0, 1.0).normalize();
+        let up = DVec3::Y;
+        // Unperturbed: the plain mirror.
+        let m = mirror_direction(d, up, up);
+        assert!((m - DVec3::new(0.0, 1.0, 1.0).normalize()).length() < 1e-12);
+        // Tilted sideways far enough to send the mirror below: only y changes sign.
+        let n = DVec3::new(1.6, 1.0, 0.0).normalize();
+        let raw = d - 2.0 * d.dot(n) * n;
+        assert!(raw.y < 0.0 && raw.dot(n) > 0.0);
+        let m = mirror_direction(d, n, up);
+        assert!((m - DVec3::new(raw.x, -raw.y, raw.z)).length() < 1e-12);
+        // Tilted past the ray (the ray meets the perturbed normal's back): the true mirror.
+        let n = DVec3::new(0.0, 1.0, 2.0).normalize();
+        assert!(d.dot(n) > 0.0);
+        let m = mirror_direction(d, n, up);
+        assert!((m - DVec3::new(0.0, 1.0, 1.0).normalize()).length() < 1e-12);
+    }
 
     #[test]
     fn fresnel_conserves_and_saturates() {
