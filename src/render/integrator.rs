@@ -61,15 +61,21 @@ pub enum Splitting {
     One,
 }
 
-/// The stack of media (indices of refraction) a ray is inside, innermost last.
+/// The interiors a ray is inside, innermost last, with their indices of refraction. POV-Ray
+/// keeps interiors, not surfaces: a ray inside an interior that meets any part of the object
+/// owning it leaves that interior, whichever way the part faces (measured: a glass box and a
+/// cylinder of one object meeting face to face, or overlapping, turn a ray back by total
+/// internal reflection at the box's top as if air were beyond, exactly as with a gap).
 #[derive(Clone, Copy, Debug)]
 struct Media {
+    ids: [u32; MEDIA_DEPTH],
     iors: [f64; MEDIA_DEPTH],
     len: usize,
 }
 
 impl Media {
     const OUTSIDE: Media = Media {
+        ids: [u32::MAX; MEDIA_DEPTH],
         iors: [1.0; MEDIA_DEPTH],
         len: 0,
     };
@@ -82,30 +88,32 @@ impl Media {
         }
     }
 
-    fn entered(&self, ior: f64) -> Media {
+    fn contains(&self, id: u32) -> bool {
+        self.ids[..self.len].contains(&id)
+    }
+
+    fn entered(&self, id: u32, ior: f64) -> Media {
         let mut m = *self;
-        if m.len < MEDIA_DEPTH {
-            m.iors[m.len] = ior;
-            m.len += 1;
-        } else {
-            m.iors[MEDIA_DEPTH - 1] = ior;
-        }
+        let slot = m.len.min(MEDIA_DEPTH - 1);
+        m.ids[slot] = id;
+        m.iors[slot] = ior;
+        m.len = slot + 1;
         m
     }
 
-    fn left(&self) -> Media {
+    /// Without the interior `id` (the innermost one when the ray did not know it was in it,
+    /// as a camera inside an object).
+    fn left(&self, id: u32) -> Media {
         let mut m = *self;
-        m.len = m.len.saturating_sub(1);
-        m
-    }
-
-    /// The medium outside the one the ray is in.
-    fn outer(&self) -> f64 {
-        if self.len <= 1 {
-            1.0
-        } else {
-            self.iors[self.len - 2]
+        match m.ids[..m.len].iter().rposition(|&i| i == id) {
+            Some(k) => {
+                m.ids.copy_within(k + 1..m.len, k);
+                m.iors.copy_within(k + 1..m.len, k);
+                m.len -= 1;
+            }
+            None => m.len = m.len.saturating_sub(1),
         }
+        m
     }
 }
 
@@ -190,7 +198,10 @@ impl<'a> Integrator<'a> {
         let surface = scene.world.surface(ray, &hit);
         let material = &scene.materials[surface.material as usize];
         let d = ray.direction.normalize();
-        let leaving = surface.normal.dot(d) > 0.0;
+        // The ray meets the surface from behind, and whether it leaves the interior (see
+        // Media: the two differ where parts of one object touch or overlap).
+        let back = surface.normal.dot(d) > 0.0;
+        let leaving = back || path.media.contains(material.interior_id);
         // A ray that crossed this object's interior to get here fades, but only in what the
         // surface lets through from beyond: POV-Ray leaves the surface's own shading (its
         // highlights seen from inside) and its internal reflection unfaded (measured: a
@@ -206,6 +217,7 @@ impl<'a> Integrator<'a> {
             &surface,
             material,
             path,
+            back,
             leaving,
             fade_through,
             sampler,
@@ -220,6 +232,7 @@ impl<'a> Integrator<'a> {
         surface: &SurfacePoint,
         material: &Material,
         path: Path,
+        back: bool,
         leaving: bool,
         fade_through: DVec3,
         sampler: &mut PixelSampler,
@@ -230,7 +243,7 @@ impl<'a> Integrator<'a> {
         let geometric = surface.normal;
         let texture = &material.texture;
         // The shading normal, turned to face the incoming ray.
-        let facing = if leaving {
+        let facing = if back {
             -surface.shading_normal
         } else {
             surface.shading_normal
@@ -273,14 +286,24 @@ impl<'a> Integrator<'a> {
             return colour;
         }
         // Indices of refraction on the ray's side and beyond the surface.
-        let (eta_from, eta_to, beyond) = if leaving {
-            (path.media.current(), path.media.outer(), path.media.left())
+        let (eta_from, beyond) = if leaving {
+            let from = if path.media.contains(material.interior_id) {
+                material.interior.ior
+            } else {
+                path.media.current()
+            };
+            (from, path.media.left(material.interior_id))
         } else {
+            let id = material.interior_id;
             (
                 path.media.current(),
-                material.interior.ior,
-                path.media.entered(material.interior.ior),
+                path.media.entered(id, material.interior.ior),
             )
+        };
+        let eta_to = if leaving {
+            beyond.current()
+        } else {
+            material.interior.ior
         };
         let cos_i = -d.dot(n);
         let outside = if geometric.dot(d) > 0.0 {

@@ -38,6 +38,9 @@ pub struct Material {
     /// Whether the texture lets light through anywhere (else shadow rays stop here).
     pub transmits: bool,
     pub interior: Interior,
+    /// Which interior this is: the parts of one object given an `interior` share it, as in
+    /// POV-Ray, where a ray inside that interior that meets any of its parts leaves it.
+    pub interior_id: u32,
 }
 
 #[derive(Clone, Debug)]
@@ -64,12 +67,14 @@ impl PreparedScene {
         let mut builder = Builder {
             world: WorldBuilder::default(),
             materials: Vec::new(),
+            interior_ids: std::collections::HashMap::new(),
         };
         let default_texture = Texture::default();
         let default_interior = Interior::default();
         let looks = Looks {
             texture: &default_texture,
             interior: &default_interior,
+            interior_owner: None,
             flags: ObjectFlags::default(),
         };
         let looks_like = scene.lights.iter().filter_map(|l| l.looks_like.as_deref());
@@ -98,6 +103,8 @@ impl PreparedScene {
 struct Builder {
     world: WorldBuilder,
     materials: Vec<Material>,
+    /// Interior ids by owner (see Looks::interior_owner).
+    interior_ids: std::collections::HashMap<usize, u32>,
 }
 
 fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
@@ -128,6 +135,9 @@ fn axis_frame(from: DVec3, to: DVec3) -> Option<Transform> {
 struct Looks<'a> {
     texture: &'a Texture,
     interior: &'a Interior,
+    /// The object whose `interior` this is (its address), or None for the default one,
+    /// which every primitive has to itself.
+    interior_owner: Option<usize>,
     flags: ObjectFlags,
 }
 
@@ -138,6 +148,10 @@ impl Builder {
         let looks = Looks {
             texture: object.texture.as_ref().unwrap_or(inherited.texture),
             interior: object.interior.as_ref().unwrap_or(inherited.interior),
+            interior_owner: match &object.interior {
+                Some(i) => Some(i as *const Interior as usize),
+                None => inherited.interior_owner,
+            },
             flags: combine(object.flags, inherited.flags),
         };
         let f = looks.flags;
@@ -236,11 +250,21 @@ impl Builder {
 
     fn material(&mut self, looks: Looks<'_>) -> u32 {
         let interior = looks.interior;
+        let next = self.interior_ids.len() as u32;
+        let interior_id = match looks.interior_owner {
+            Some(owner) => *self.interior_ids.entry(owner).or_insert(next),
+            None => {
+                // A default interior of its own: a key no address can take.
+                let key = usize::MAX - self.materials.len();
+                *self.interior_ids.entry(key).or_insert(next)
+            }
+        };
         self.materials.push(Material {
             texture: looks.texture.clone(),
             double_illuminate: looks.flags.double_illuminate,
             transmits: may_transmit(looks.texture),
             interior: *interior,
+            interior_id,
         });
         (self.materials.len() - 1) as u32
     }
