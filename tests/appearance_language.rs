@@ -91,6 +91,43 @@ fn normals_parse_with_amounts_and_tilt_the_normal() {
 }
 
 #[test]
+fn slope_and_normal_maps_parse_and_transform_their_entries() {
+    let s = load(
+        "#version 3.7;\nplane { -z, 0 normal { gradient x, 1 slope_map { [0 <0, 0>] [0.5, <1, -2>] [1 0.5] } } }\n\
+         plane { -z, 0 normal { gradient x normal_map { [0 gradient y, -10] [1 gradient x, -2.5 scale 2] } rotate z*30 } }",
+    );
+    let n0 = s.objects[0]
+        .texture
+        .as_ref()
+        .expect("t")
+        .normal
+        .as_ref()
+        .expect("normal");
+    let heights: Vec<_> = n0
+        .slope_map
+        .iter()
+        .map(|e| (e.value, e.height, e.slope))
+        .collect();
+    assert_eq!(
+        heights,
+        [(0.0, 0.0, 0.0), (0.5, 1.0, -2.0), (1.0, 0.5, 0.5)]
+    );
+    let t1 = s.objects[1].texture.as_ref().expect("t");
+    let n1 = t1.normal.as_ref().expect("normal");
+    assert_eq!(n1.normal_map.len(), 2);
+    // The rotation written after the map turns the entries too (measured with povray).
+    let p = DVec3::new(1.0, 0.0, 0.0);
+    let turned = n1.normal_map[0].1.transform.inverse_point(p);
+    assert!(
+        (turned - n1.transform.inverse_point(p)).length() < 1e-12,
+        "{turned}"
+    );
+    // The mixed normal is renormalised and still faces the viewer.
+    let n = perturbed_normal(t1, DVec3::new(0.3, 0.2, 0.0), -DVec3::Z);
+    assert!((n.length() - 1.0).abs() < 1e-9 && n.z < 0.0, "{n}");
+}
+
+#[test]
 fn pattern_modifiers_and_warp_order() {
     let s = load(
         "#version 3.7;\nsphere { 0, 1 pigment { bozo scale 2 warp { turbulence 0.5 octaves 3 } \

@@ -13,7 +13,7 @@ pub use light::{AreaLight, Light, LightKind};
 pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
 pub use texture::{
     Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
-    PigmentKind, Reflection, Texture, TextureMap, Turbulence, Warp, Wave,
+    PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Turbulence, Warp, Wave,
 };
 
 use glam::DVec3;

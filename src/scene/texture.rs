@@ -317,6 +317,20 @@ pub struct Normal {
     pub transform: Transform,
     /// The finite-difference step (world units) for patterns without their own normal.
     pub accuracy: f64,
+    /// `slope_map`: the pattern value becomes a height before the finite difference.
+    pub slope_map: Vec<SlopeEntry>,
+    /// `normal_map`: the pattern value blends these normals instead of tilting by itself.
+    pub normal_map: Vec<(f64, Normal)>,
+}
+
+/// One `[value, <height, slope>]` of a slope map; `slope` is the height's derivative per
+/// unit of the interval's own parameter (0 to 1 between neighbouring entries), not per
+/// unit pattern value (measured: `[0 <0,1>][0.5 <1,1>][1 <0,-1>]` fits only that way).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SlopeEntry {
+    pub value: f64,
+    pub height: f64,
+    pub slope: f64,
 }
 
 impl Normal {
@@ -326,14 +340,21 @@ impl Normal {
             amount: 0.5,
             transform: Transform::IDENTITY,
             accuracy: 0.02,
+            slope_map: Vec::new(),
+            normal_map: Vec::new(),
         }
     }
 
     /// Only the normal's own transform moves: a `pigment_pattern`'s pigment is evaluated in
     /// the normal's pattern space, so moving it too would apply the transform twice
     /// (measured: `rotate z*90` on the object turns POV-Ray's grooves by 90 degrees, not 180).
+    /// A normal map's entries are evaluated at the world point, so they move too (measured:
+    /// `rotate z*30` after a `normal_map` turns the entries' tilts with the pattern).
     pub fn transform_by(&mut self, t: &Transform) {
         self.transform = self.transform.then(t);
+        for (_, e) in &mut self.normal_map {
+            e.transform_by(t);
+        }
     }
 }
 

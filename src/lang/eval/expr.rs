@@ -33,6 +33,17 @@ impl Evaluator<'_> {
         self.to_float(&v, span)
     }
 
+    /// A map entry's value: in `[0 <0, 1>]` the `<` starts the entry's vector, not a
+    /// comparison, so the value stops before comparisons.
+    pub(super) fn map_value(&mut self) -> R<f64> {
+        let start = self.peek()?.span;
+        self.enter(start)?;
+        let r = self.additive();
+        self.leave();
+        let (v, span) = r?;
+        self.to_float(&v, span)
+    }
+
     pub(super) fn vector3(&mut self) -> R<DVec3> {
         let (v, span) = self.expr()?;
         self.to_vec3(&v, span)

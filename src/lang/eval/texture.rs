@@ -10,7 +10,7 @@ use super::Evaluator;
 use super::value::{Value, colour_of};
 use crate::scene::{
     Colour, Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
-    PigmentKind, Reflection, Texture, TextureMap, Transform, Turbulence, Warp, Wave,
+    PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Transform, Turbulence, Warp, Wave,
 };
 
 type R<T> = Result<T, Diagnostic>;
@@ -531,17 +531,17 @@ impl Evaluator<'_> {
     pub(super) fn normal_body(&mut self, base: Option<Normal>) -> R<Option<Normal>> {
         let open = self.expect(Punct::LBrace, "after `normal`")?;
         self.enter(open.span)?;
-        let r = self.normal_items(base);
+        let r = self.normal_items(base, Punct::RBrace);
         self.leave();
         let n = r?;
         self.expect(Punct::RBrace, "to close the normal")?;
         Ok(n)
     }
 
-    fn normal_items(&mut self, mut n: Option<Normal>) -> R<Option<Normal>> {
+    fn normal_items(&mut self, mut n: Option<Normal>, close: Punct) -> R<Option<Normal>> {
         loop {
             let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
+            if tok.is_punct(close) {
                 return Ok(n);
             }
             if let Some(t) = self.transform_modifier()? {
@@ -580,7 +580,29 @@ impl Evaluator<'_> {
                         n.accuracy = a;
                     }
                 }
-                w if UNSUPPORTED_PATTERNS.contains(&w) || w == "normal_map" || w == "slope_map" => {
+                "slope_map" => {
+                    self.next()?;
+                    let map = self.slope_map_body()?;
+                    match &mut n {
+                        Some(n) => n.slope_map = map,
+                        None => {
+                            return Err(self.err(tok.span, "`slope_map` needs a pattern before it"));
+                        }
+                    }
+                }
+                "normal_map" => {
+                    self.next()?;
+                    let map = self.normal_map_body()?;
+                    match &mut n {
+                        Some(n) => n.normal_map = map,
+                        None => {
+                            return Err(
+                                self.err(tok.span, "`normal_map` needs a pattern before it")
+                            );
+                        }
+                    }
+                }
+                w if UNSUPPORTED_PATTERNS.contains(&w) => {
                     return Err(self.unsupported(&tok, w));
                 }
                 w => {
@@ -593,6 +615,58 @@ impl Evaluator<'_> {
                 }
             }
         }
+    }
+
+    /// `{ [v, <height, slope>] ... }` after `slope_map`, sorted as written.
+    fn slope_map_body(&mut self) -> R<Vec<SlopeEntry>> {
+        let open = self.expect(Punct::LBrace, "after `slope_map`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<SlopeEntry>> {
+            let mut map = Vec::new();
+            while self.eat(Punct::LBracket)? {
+                let value = self.map_value()?;
+                self.eat(Punct::Comma)?;
+                let v = self.vector3()?;
+                map.push(SlopeEntry {
+                    value,
+                    height: v.x,
+                    slope: v.y,
+                });
+                self.expect(Punct::RBracket, "to close the slope map entry")?;
+            }
+            Ok(map)
+        })();
+        self.leave();
+        let map = r?;
+        self.expect(Punct::RBrace, "to close the slope map")?;
+        Ok(map)
+    }
+
+    /// `{ [v normal body] ... }` after `normal_map`: entries are bare normal bodies
+    /// (`[0.5 bumps 0.3 scale 2]`); POV-Ray rejects a `normal {...}` wrapper there.
+    fn normal_map_body(&mut self) -> R<Vec<(f64, Normal)>> {
+        let open = self.expect(Punct::LBrace, "after `normal_map`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<(f64, Normal)>> {
+            let mut map = Vec::new();
+            while self.eat(Punct::LBracket)? {
+                let v = self.float()?;
+                self.eat(Punct::Comma)?;
+                let n = self.normal_items(None, Punct::RBracket)?;
+                // An entry without a pattern leaves the normal as it is.
+                let n = n.unwrap_or_else(|| Normal {
+                    amount: 0.0,
+                    ..Normal::new(Pattern::new(PatternKind::Bozo))
+                });
+                map.push((v, n));
+                self.expect(Punct::RBracket, "to close the normal map entry")?;
+            }
+            Ok(map)
+        })();
+        self.leave();
+        let map = r?;
+        self.expect(Punct::RBrace, "to close the normal map")?;
+        Ok(map)
     }
 
     /// One entry of a pattern list: `pigment {...}` or a colour; `None` when neither follows.
