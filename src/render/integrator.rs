@@ -286,24 +286,18 @@ impl<'a> Integrator<'a> {
             return colour;
         }
         // Indices of refraction on the ray's side and beyond the surface.
-        let (eta_from, beyond) = if leaving {
-            let from = if path.media.contains(material.interior_id) {
-                material.interior.ior
+        let id = material.interior_id;
+        let ior = material.interior.ior;
+        let (eta_from, eta_to, beyond) = if leaving {
+            let beyond = path.media.left(id);
+            let from = if path.media.contains(id) {
+                ior
             } else {
                 path.media.current()
             };
-            (from, path.media.left(material.interior_id))
+            (from, beyond.current(), beyond)
         } else {
-            let id = material.interior_id;
-            (
-                path.media.current(),
-                path.media.entered(id, material.interior.ior),
-            )
-        };
-        let eta_to = if leaving {
-            beyond.current()
-        } else {
-            material.interior.ior
+            (path.media.current(), ior, path.media.entered(id, ior))
         };
         let cos_i = -d.dot(n);
         let outside = if geometric.dot(d) > 0.0 {
@@ -317,7 +311,8 @@ impl<'a> Integrator<'a> {
             * metallic_tint(finish.reflection.metallic, top_colour.rgb, cos_i);
         let eta = eta_from / eta_to;
         let straight = (eta - 1.0).abs() < 1e-12;
-        let refracted = if straight {
+        // (Opaque surfaces transmit nothing: no refraction to compute.)
+        let refracted = if straight || through == DVec3::ZERO {
             Some(d)
         } else {
             refract(d, n, eta)
