@@ -601,12 +601,29 @@ impl<'a> Integrator<'a> {
         // Crossings of fading interiors, kept to measure the distance travelled inside.
         let mut fading = [(0.0f64, 0u32, false); MAX_FADING_CROSSINGS];
         let mut fading_len = 0;
+        // Distances of the transparent crossings counted so far: POV-Ray follows a shadow ray
+        // from crossing to crossing, so two faces at the same distance (a box and a cylinder
+        // of one object meeting face to face) filter it once (measured: iortest's figures
+        // match POV-Ray with a 0.01 gap or overlap but were darker where the faces touch).
+        let mut counted = [0.0f64; MAX_FADING_CROSSINGS];
+        let mut counted_len = 0;
         scene.world.shadow_hits(ray, t_max, |hit| {
             let primitive = scene.world.primitive_material(hit.primitive);
             let material = &scene.materials[primitive as usize];
             if !material.transmits {
                 filter = DVec3::ZERO;
                 return false;
+            }
+            let tie = 1e-9 * hit.t.abs().max(1.0);
+            if counted[..counted_len]
+                .iter()
+                .any(|&t| (t - hit.t).abs() <= tie)
+            {
+                return true;
+            }
+            if counted_len < counted.len() {
+                counted[counted_len] = hit.t;
+                counted_len += 1;
             }
             let at = scene.world.texture_point(ray, hit);
             for layer in texture_layers(&material.texture, at).iter() {
