@@ -17,6 +17,7 @@ use glam::DVec3;
 use penumbra::appearance::evaluate_pigment;
 use penumbra::lang::{LoadOptions, load_scene_source};
 use penumbra::scene::Pigment;
+use penumbra::study::distribution::{band_powers, quantile};
 
 const SIZE: usize = 512;
 const EXTENT: f64 = 32.0;
@@ -91,97 +92,6 @@ fn image(p: &Pigment, z: f64) -> Vec<f64> {
     v
 }
 
-/// numpy's default (linear) quantile.
-fn quantile(sorted: &[f64], q: f64) -> f64 {
-    let h = (sorted.len() - 1) as f64 * q;
-    let lo = h.floor() as usize;
-    let hi = (lo + 1).min(sorted.len() - 1);
-    sorted[lo] + (h - lo as f64) * (sorted[hi] - sorted[lo])
-}
-
-fn fft(re: &mut [f64], im: &mut [f64]) {
-    let n = re.len();
-    let mut j = 0;
-    for i in 1..n {
-        let mut bit = n >> 1;
-        while j & bit != 0 {
-            j ^= bit;
-            bit >>= 1;
-        }
-        j |= bit;
-        if i < j {
-            re.swap(i, j);
-            im.swap(i, j);
-        }
-    }
-    let mut len = 2;
-    while len <= n {
-        let ang = -2.0 * std::f64::consts::PI / len as f64;
-        for start in (0..n).step_by(len) {
-            for k in 0..len / 2 {
-                let (s, c) = (ang * k as f64).sin_cos();
-                let (a, b) = (start + k, start + k + len / 2);
-                let tr = re[b] * c - im[b] * s;
-                let ti = re[b] * s + im[b] * c;
-                re[b] = re[a] - tr;
-                im[b] = im[a] - ti;
-                re[a] += tr;
-                im[a] += ti;
-            }
-        }
-        len <<= 1;
-    }
-}
-
-/// Mean of |F|^2 / N over each radial band, as scripts/noise_reference.py computes it.
-fn band_powers(img: &[f64]) -> Vec<f64> {
-    let mean = img.iter().sum::<f64>() / img.len() as f64;
-    let mut re: Vec<f64> = img.iter().map(|v| v - mean).collect();
-    let mut im = vec![0.0; re.len()];
-    for r in 0..SIZE {
-        fft(
-            &mut re[r * SIZE..(r + 1) * SIZE],
-            &mut im[r * SIZE..(r + 1) * SIZE],
-        );
-    }
-    let (mut cr, mut ci) = (vec![0.0; SIZE], vec![0.0; SIZE]);
-    for c in 0..SIZE {
-        for r in 0..SIZE {
-            cr[r] = re[r * SIZE + c];
-            ci[r] = im[r * SIZE + c];
-        }
-        fft(&mut cr, &mut ci);
-        for r in 0..SIZE {
-            re[r * SIZE + c] = cr[r];
-            im[r * SIZE + c] = ci[r];
-        }
-    }
-    let freq = |k: usize| {
-        let k = if k < SIZE / 2 {
-            k as f64
-        } else {
-            k as f64 - SIZE as f64
-        };
-        k / EXTENT
-    };
-    let mut sums = vec![0.0; BANDS.len() - 1];
-    let mut counts = vec![0usize; BANDS.len() - 1];
-    for r in 0..SIZE {
-        for c in 0..SIZE {
-            let k = freq(r).hypot(freq(c));
-            if let Some(b) = BANDS.windows(2).position(|w| k >= w[0] && k < w[1]) {
-                let i = r * SIZE + c;
-                sums[b] += (re[i] * re[i] + im[i] * im[i]) / img.len() as f64;
-                counts[b] += 1;
-            }
-        }
-    }
-    sums.iter()
-        .zip(&counts)
-        .map(|(s, &n)| s / n.max(1) as f64)
-        .collect()
-}
-
 #[test]
 fn noise_patterns_match_povray_in_distribution() {
     let mut failures = Vec::new();
@@ -200,7 +110,7 @@ fn noise_patterns_match_povray_in_distribution() {
             .fold(0.0, f64::max);
         let mut bands = vec![0.0; BANDS.len() - 1];
         for img in &images {
-            for (b, v) in bands.iter_mut().zip(band_powers(img)) {
+            for (b, v) in bands.iter_mut().zip(band_powers(img, SIZE, EXTENT, &BANDS)) {
                 *b += v / ZS.len() as f64;
             }
         }

@@ -1,0 +1,125 @@
+//! Distribution statistics for comparing noisy textures with POV-Ray's: quantiles of the
+//! values and radially averaged power spectra in octave bands. Noise-based patterns cannot
+//! match POV-Ray point by point (its noise tables are its own), so they are compared this
+//! way (tests/appearance_noise.rs, tests/appearance_normals.rs, scripts/noise_reference.py
+//! computes the same figures for povray's renders).
+
+/// numpy's default (linear) quantile of sorted values.
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
+    let h = (sorted.len() - 1) as f64 * q;
+    let lo = h.floor() as usize;
+    let hi = (lo + 1).min(sorted.len() - 1);
+    sorted[lo] + (h - lo as f64) * (sorted[hi] - sorted[lo])
+}
+
+fn fft(re: &mut [f64], im: &mut [f64]) {
+    let n = re.len();
+    let mut j = 0;
+    for i in 1..n {
+        let mut bit = n >> 1;
+        while j & bit != 0 {
+            j ^= bit;
+            bit >>= 1;
+        }
+        j |= bit;
+        if i < j {
+            re.swap(i, j);
+            im.swap(i, j);
+        }
+    }
+    let mut len = 2;
+    while len <= n {
+        let ang = -2.0 * std::f64::consts::PI / len as f64;
+        for start in (0..n).step_by(len) {
+            for k in 0..len / 2 {
+                let (s, c) = (ang * k as f64).sin_cos();
+                let (a, b) = (start + k, start + k + len / 2);
+                let tr = re[b] * c - im[b] * s;
+                let ti = re[b] * s + im[b] * c;
+                re[b] = re[a] - tr;
+                im[b] = im[a] - ti;
+                re[a] += tr;
+                im[a] += ti;
+            }
+        }
+        len <<= 1;
+    }
+}
+
+/// Mean of |F|^2 / N over each radial band of a `size` x `size` image covering `extent`
+/// units, bands given by their edges in cycles per unit (`size` a power of two).
+pub fn band_powers(img: &[f64], size: usize, extent: f64, bands: &[f64]) -> Vec<f64> {
+    let mean = img.iter().sum::<f64>() / img.len() as f64;
+    let mut re: Vec<f64> = img.iter().map(|v| v - mean).collect();
+    let mut im = vec![0.0; re.len()];
+    for r in 0..size {
+        fft(
+            &mut re[r * size..(r + 1) * size],
+            &mut im[r * size..(r + 1) * size],
+        );
+    }
+    let (mut cr, mut ci) = (vec![0.0; size], vec![0.0; size]);
+    for c in 0..size {
+        for r in 0..size {
+            cr[r] = re[r * size + c];
+            ci[r] = im[r * size + c];
+        }
+        fft(&mut cr, &mut ci);
+        for r in 0..size {
+            re[r * size + c] = cr[r];
+            im[r * size + c] = ci[r];
+        }
+    }
+    let freq = |k: usize| {
+        let k = if k < size / 2 {
+            k as f64
+        } else {
+            k as f64 - size as f64
+        };
+        k / extent
+    };
+    let mut sums = vec![0.0; bands.len() - 1];
+    let mut counts = vec![0usize; bands.len() - 1];
+    for r in 0..size {
+        for c in 0..size {
+            let k = freq(r).hypot(freq(c));
+            if let Some(b) = bands.windows(2).position(|w| k >= w[0] && k < w[1]) {
+                let i = r * size + c;
+                sums[b] += (re[i] * re[i] + im[i] * im[i]) / img.len() as f64;
+                counts[b] += 1;
+            }
+        }
+    }
+    sums.iter()
+        .zip(&counts)
+        .map(|(s, &n)| s / n.max(1) as f64)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantiles_interpolate_like_numpy() {
+        let v = [0.0, 1.0, 2.0, 3.0, 4.0];
+        assert_eq!(quantile(&v, 0.0), 0.0);
+        assert_eq!(quantile(&v, 0.5), 2.0);
+        assert!((quantile(&v, 0.3) - 1.2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_sine_puts_its_power_in_its_band() {
+        // 64 x 64 over 8 units: a wave of 3 cycles per unit along x lies in band [2, 4).
+        let (size, extent) = (64, 8.0);
+        let img: Vec<f64> = (0..size * size)
+            .map(|i| {
+                let x = (i % size) as f64 * extent / size as f64;
+                (std::f64::consts::TAU * 3.0 * x).sin()
+            })
+            .collect();
+        let p = band_powers(&img, size, extent, &[0.5, 1.0, 2.0, 4.0]);
+        assert!(p[2] > 0.0);
+        assert!(p[0] < 1e-20 && p[1] < 1e-20, "{p:?}");
+    }
+}
