@@ -14,7 +14,7 @@ use glam::DVec3;
 use penumbra::appearance::perturbed_normal;
 use penumbra::lang::{LoadOptions, load_scene_source};
 use penumbra::scene::Texture;
-use penumbra::study::distribution::{band_powers, quantile};
+use penumbra::study::distribution::{band_powers, numbers, quantile, table_rows};
 
 const SIZE: usize = 512;
 const EXTENT: f64 = 32.0;
@@ -41,15 +41,10 @@ fn references() -> Vec<Reference> {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/references/normal_stats.txt");
     let text =
         std::fs::read_to_string(&path).expect("normal_stats.txt; run scripts/normal_reference.py");
-    text.lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        .map(|l| {
-            let f: Vec<&str> = l.split('|').map(str::trim).collect();
-            let nums = |s: &str| {
-                s.split_whitespace()
-                    .map(|v| v.parse().expect("number"))
-                    .collect()
-            };
+    table_rows(&text)
+        .into_iter()
+        .map(|f| {
+            let nums = |s: &str| numbers(s).expect("numbers");
             Reference {
                 name: f[0].to_string(),
                 pattern: f[1].to_string(),

@@ -4,6 +4,20 @@
 //! way (tests/appearance_noise.rs, tests/appearance_normals.rs, scripts/noise_reference.py
 //! computes the same figures for povray's renders).
 
+/// The rows of a statistics table written by scripts/noise_reference.py or
+/// scripts/normal_reference.py: `|`-separated fields, `#` comments and blank lines skipped.
+pub fn table_rows(text: &str) -> Vec<Vec<&str>> {
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| l.split('|').map(str::trim).collect())
+        .collect()
+}
+
+/// The numbers of a space-separated field, or None if one does not parse.
+pub fn numbers(field: &str) -> Option<Vec<f64>> {
+    field.split_whitespace().map(|v| v.parse().ok()).collect()
+}
+
 /// numpy's default (linear) quantile of sorted values.
 pub fn quantile(sorted: &[f64], q: f64) -> f64 {
     let h = (sorted.len() - 1) as f64 * q;
@@ -99,6 +113,14 @@ pub fn band_powers(img: &[f64], size: usize, extent: f64, bands: &[f64]) -> Vec<
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn tables_skip_comments_and_split_fields() {
+        let rows = table_rows("# name | values\n\nbozo | 0.1 0.2 | x\n");
+        assert_eq!(rows, vec![vec!["bozo", "0.1 0.2", "x"]]);
+        assert_eq!(numbers(rows[0][1]), Some(vec![0.1, 0.2]));
+        assert_eq!(numbers(rows[0][2]), None);
+    }
 
     #[test]
     fn quantiles_interpolate_like_numpy() {
