@@ -3,7 +3,7 @@
 //! Stages: [`parse`] turns text into tokens (nom), [`syntax`] defines them with their spans,
 //! `eval` runs directives and macros while reading objects, textures and settings into a
 //! [`Scene`](crate::scene::Scene), and [`diagnostics`] prints errors with file, line,
-//! column and a caret. All file access goes through [`World`], so tests can use files held
+//! column and a caret. All file access goes through [`SourceFiles`], so tests can use files held
 //! in memory.
 
 pub mod diagnostics;
@@ -53,7 +53,7 @@ pub struct Loaded {
 
 /// Where include files come from. One place decides what can be read, and tests substitute
 /// files held in memory.
-pub trait World {
+pub trait SourceFiles {
     fn read(&self, path: &Path) -> std::io::Result<String>;
     fn exists(&self, path: &Path) -> bool;
 }
@@ -61,7 +61,7 @@ pub trait World {
 /// The real file system.
 pub struct FileSystem;
 
-impl World for FileSystem {
+impl SourceFiles for FileSystem {
     fn read(&self, path: &Path) -> std::io::Result<String> {
         let bytes = std::fs::read(path)?;
         // Scene files are often Latin-1; keep going rather than refusing them.
@@ -75,11 +75,11 @@ impl World for FileSystem {
 
 /// Files held in memory, looked up by path; for tests.
 #[derive(Default, Clone, Debug)]
-pub struct MemoryWorld {
+pub struct MemoryFiles {
     pub files: HashMap<PathBuf, String>,
 }
 
-impl World for MemoryWorld {
+impl SourceFiles for MemoryFiles {
     fn read(&self, path: &Path) -> std::io::Result<String> {
         self.files
             .get(path)
@@ -127,29 +127,29 @@ pub fn load_scene_source(
     source: &str,
     options: &LoadOptions,
 ) -> Result<Loaded, Diagnostic> {
-    load_with_world(name, source, options, &FileSystem)
+    load_with_files(name, source, options, &FileSystem)
 }
 
 /// Stack for the evaluator's thread: deeply nested scenes recurse, and the nesting limit
 /// (`eval::MAX_DEPTH`) is set so this is always enough, even in debug builds.
 const EVAL_STACK_BYTES: usize = 256 << 20;
 
-/// Reads a scene with includes resolved through `world`.
-pub fn load_with_world(
+/// Reads a scene with includes resolved through `files`.
+pub fn load_with_files(
     name: &str,
     source: &str,
     options: &LoadOptions,
-    world: &(dyn World + Sync),
+    files: &(dyn SourceFiles + Sync),
 ) -> Result<Loaded, Diagnostic> {
-    load_inner(name, source, options, world, false)
+    load_inner(name, source, options, files, false)
 }
 
-/// [`load_with_world`] with the choice of skipping unsupported features.
+/// [`load_with_files`] with the choice of skipping unsupported features.
 pub fn load_inner(
     name: &str,
     source: &str,
     options: &LoadOptions,
-    world: &(dyn World + Sync),
+    files: &(dyn SourceFiles + Sync),
     skip_unsupported: bool,
 ) -> Result<Loaded, Diagnostic> {
     std::thread::scope(|s| {
@@ -157,7 +157,7 @@ pub fn load_inner(
             .name("penumbra-lang".into())
             .stack_size(EVAL_STACK_BYTES)
             .spawn_scoped(s, || {
-                evaluate(name, source, options, world, skip_unsupported)
+                evaluate(name, source, options, files, skip_unsupported)
             });
         match handle {
             Ok(h) => h.join().unwrap_or_else(|_| {
@@ -167,7 +167,7 @@ pub fn load_inner(
                 ))
             }),
             // No thread (resource limits): read on this one.
-            Err(_) => evaluate(name, source, options, world, skip_unsupported),
+            Err(_) => evaluate(name, source, options, files, skip_unsupported),
         }
     })
 }
@@ -176,11 +176,11 @@ fn evaluate(
     name: &str,
     source: &str,
     options: &LoadOptions,
-    world: &dyn World,
+    files: &dyn SourceFiles,
     skip_unsupported: bool,
 ) -> Result<Loaded, Diagnostic> {
     let mut ev = eval::Evaluator::new(
-        world,
+        files,
         options.include_paths.clone(),
         options.image_width,
         options.image_height,

@@ -451,7 +451,7 @@ fn macros_at_item_level_and_in_expressions() {
 
 #[test]
 fn includes_are_searched_and_chained_in_errors() {
-    let mut world = MemoryWorld::default();
+    let mut world = MemoryFiles::default();
     world.files.insert(
         PathBuf::from("inc/colours.inc"),
         "#declare Red = rgb <1,0,0>;\n#declare Bad = <1,2;\n".into(),
@@ -464,7 +464,7 @@ fn includes_are_searched_and_chained_in_errors() {
         include_paths: vec![PathBuf::from("inc")],
         ..LoadOptions::default()
     };
-    let l = load_with_world(
+    let l = load_with_files(
         "main.pov",
         "#include \"good.inc\"\nsphere { 0, 1 pigment { Red } }",
         &options,
@@ -475,7 +475,7 @@ fn includes_are_searched_and_chained_in_errors() {
         l.scene.objects[0].texture.as_ref().expect("t").pigment.kind,
         PigmentKind::Solid(Colour::rgb(1.0, 0.0, 0.0))
     );
-    let e = load_with_world("main.pov", "\n#include \"colours.inc\"\n", &options, &world)
+    let e = load_with_files("main.pov", "\n#include \"colours.inc\"\n", &options, &world)
         .expect_err("bad include");
     assert_eq!(
         e.to_string(),
@@ -917,7 +917,7 @@ fn load_skipping(src: &str) -> Loaded {
         "test.pov",
         src,
         &LoadOptions::default(),
-        &MemoryWorld::default(),
+        &MemoryFiles::default(),
         true,
     ) {
         Ok(l) => l,

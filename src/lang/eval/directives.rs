@@ -759,7 +759,7 @@ impl Evaluator<'_> {
             return Err(self.err(s, format!("cannot find the include file \"{name}\"")));
         };
         let text = self
-            .world
+            .sources
             .read(&path)
             .map_err(|e| self.err(s, format!("cannot read \"{}\": {e}", path.display())))?;
         self.push_file(
@@ -788,7 +788,7 @@ impl Evaluator<'_> {
         dirs.push(PathBuf::from("/usr/share/povray-3.7/include"));
         dirs.into_iter()
             .map(|d| d.join(name))
-            .find(|p| self.world.exists(p))
+            .find(|p| self.sources.exists(p))
     }
 }
 

@@ -26,7 +26,7 @@ use std::rc::Rc;
 
 use crate::scene::Scene;
 
-use super::World;
+use super::SourceFiles;
 use super::diagnostics::{Diagnostic, Files, Span};
 use super::syntax::{Punct, Token, TokenKind};
 use stream::{Cond, Frame};
@@ -45,7 +45,7 @@ pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
 pub const MAX_LOOP_ITERATIONS: u64 = 100_000;
 
 pub struct Evaluator<'w> {
-    world: &'w dyn World,
+    sources: &'w dyn SourceFiles,
     pub files: Files,
     frames: Vec<Frame>,
     conds: Vec<Cond>,
@@ -72,13 +72,13 @@ pub struct Evaluator<'w> {
 
 impl<'w> Evaluator<'w> {
     pub fn new(
-        world: &'w dyn World,
+        sources: &'w dyn SourceFiles,
         include_paths: Vec<PathBuf>,
         image_width: u32,
         image_height: u32,
     ) -> Evaluator<'w> {
         Evaluator {
-            world,
+            sources,
             files: Files::default(),
             frames: Vec::new(),
             conds: Vec::new(),
