@@ -29,7 +29,11 @@ fn object(shape: Shape, texture: Option<Texture>) -> Object {
 fn radiance(scene: &PreparedScene, ray: &Ray) -> DVec3 {
     let mut sampler = PixelSampler::new(1);
     sampler.start(0, 0, 0, 0);
-    Integrator::new(scene).radiance(ray, &mut sampler, &mut RayCounts::default())
+    Integrator::new(scene, &RenderOptions::default()).radiance(
+        ray,
+        &mut sampler,
+        &mut RayCounts::default(),
+    )
 }
 
 /// A convex object cannot shadow itself: the lit side shows exactly albedo * N.L, down to

@@ -2,6 +2,7 @@
 //! answers light (finish). Everything here follows what POV-Ray 3.7 computes
 //! (shared/pov-semantics.md), including where that is not physical.
 
+pub mod blend;
 pub mod finish;
 pub mod noise;
 pub mod normal;

@@ -8,9 +8,9 @@ use glam::DVec3;
 
 use std::f64::consts::TAU;
 
+use super::blend::{Blend, blend_position};
 use super::noise::{noise, value_gradient_vector};
 use super::pattern::{WAVE_SOURCES, pattern_value, warp_point};
-use super::pigment::{Blend, blend_position};
 use crate::scene::{Normal, Pattern, PatternKind, SlopeEntry};
 
 /// The corners of a regular tetrahedron in pattern space, oriented as POV-Ray's are: one

@@ -160,22 +160,7 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
         PatternKind::Marble => {
             p.x + classic(pattern).map_or(0.0, |t| t.amount.x * turbulence(p, &t))
         }
-        PatternKind::Wood => {
-            // With turbulence, POV-Ray bends the rings by a sine of the turbulent
-            // coordinate (amplitude 1, frequency = the turbulence amount); a plain
-            // displacement gives a third of povray's spectral power at high frequencies.
-            let (x, y) = match classic(pattern) {
-                Some(t) => {
-                    let d = dturbulence(p, &t);
-                    (
-                        p.x + (TAU * (p.x + d.x) * t.amount.x).sin(),
-                        p.y + (TAU * (p.y + d.y) * t.amount.y).sin(),
-                    )
-                }
-                None => (p.x, p.y),
-            };
-            x.hypot(y)
-        }
+        PatternKind::Wood => wood(pattern, p),
         PatternKind::Agate { turbulence: scale } => {
             // The 1.3 gain on the turbulence and the 0.77 power match povray's agate.
             let t = classic(pattern).unwrap_or(Turbulence {
@@ -192,56 +177,10 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
             let n = noise_with(p, pattern.noise_generator);
             n * n * n
         }
-        PatternKind::Granite => {
-            // Six octaves of |0.5 - noise| at 4x frequency; the gain 2 is fitted to
-            // povray's granite quantiles.
-            let inner = inner_generator(pattern.noise_generator);
-            let mut sum = 0.0;
-            let mut freq = 1.0;
-            for _ in 0..6 {
-                sum += (0.5 - noise_with(4.0 * p * freq, inner)).abs() / freq;
-                freq *= 2.0;
-            }
-            let (gain, offset) = match pattern.noise_generator {
-                1 => GRANITE_GENERATOR1,
-                3 => GRANITE_GENERATOR3,
-                _ => (1.0, 0.0),
-            };
-            (gain * 2.0 * sum + offset).max(0.0)
-        }
-        PatternKind::Wrinkles => {
-            // Ten octaves of noise around 0.5, weights halving: povray's wrinkles is
-            // centred on 0.5 and 15% wider than bozo, which this sum reproduces.
-            let inner = inner_generator(pattern.noise_generator);
-            let mut sum = 0.5;
-            let mut f = 1.0;
-            for _ in 0..10 {
-                sum += (noise_with(p * f, inner) - 0.5) / f;
-                f *= 2.0;
-            }
-            let (gain, offset) = match pattern.noise_generator {
-                1 => WRINKLES_GENERATOR1,
-                3 => WRINKLES_GENERATOR3,
-                _ => (1.0, 0.0),
-            };
-            (gain * sum + offset).clamp(0.0, 1.0)
-        }
-        PatternKind::Ripples => {
-            let mut sum = 0.0;
-            for (s, _) in WAVE_SOURCES {
-                let d = p.distance(DVec3::from(s));
-                sum += (TAU * (d * pattern.frequency + pattern.phase)).sin();
-            }
-            0.5 + 0.5 * sum / WAVE_SOURCES.len() as f64
-        }
-        PatternKind::Waves => {
-            let mut sum = 0.0;
-            for (s, f) in WAVE_SOURCES {
-                let d = p.distance(DVec3::from(s));
-                sum += (TAU * (d * f * pattern.frequency + pattern.phase)).sin() / f;
-            }
-            0.5 + 0.2 * sum / WAVE_SOURCES.len() as f64
-        }
+        PatternKind::Granite => granite(pattern, p),
+        PatternKind::Wrinkles => wrinkles(pattern, p),
+        PatternKind::Ripples => ripples(pattern, p),
+        PatternKind::Waves => waves(pattern, p),
         PatternKind::Planar => 1.0 - p.y.abs().min(1.0),
         PatternKind::Spherical => 1.0 - p.length().min(1.0),
         PatternKind::Cylindrical => 1.0 - p.x.hypot(p.z).min(1.0),
@@ -254,6 +193,79 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
             list_index(&pattern.kind, p) as f64
         }
     }
+}
+
+fn wood(pattern: &Pattern, p: DVec3) -> f64 {
+    // With turbulence, POV-Ray bends the rings by a sine of the turbulent
+    // coordinate (amplitude 1, frequency = the turbulence amount); a plain
+    // displacement gives a third of povray's spectral power at high frequencies.
+    let (x, y) = match classic(pattern) {
+        Some(t) => {
+            let d = dturbulence(p, &t);
+            (
+                p.x + (TAU * (p.x + d.x) * t.amount.x).sin(),
+                p.y + (TAU * (p.y + d.y) * t.amount.y).sin(),
+            )
+        }
+        None => (p.x, p.y),
+    };
+    x.hypot(y)
+}
+
+fn granite(pattern: &Pattern, p: DVec3) -> f64 {
+    // Six octaves of |0.5 - noise| at 4x frequency; the gain 2 is fitted to
+    // povray's granite quantiles.
+    let inner = inner_generator(pattern.noise_generator);
+    let mut sum = 0.0;
+    let mut freq = 1.0;
+    for _ in 0..6 {
+        sum += (0.5 - noise_with(4.0 * p * freq, inner)).abs() / freq;
+        freq *= 2.0;
+    }
+    let (gain, offset) = match pattern.noise_generator {
+        1 => GRANITE_GENERATOR1,
+        3 => GRANITE_GENERATOR3,
+        _ => (1.0, 0.0),
+    };
+    (gain * 2.0 * sum + offset).max(0.0)
+}
+
+fn wrinkles(pattern: &Pattern, p: DVec3) -> f64 {
+    // Ten octaves of noise around 0.5, weights halving: povray's wrinkles is
+    // centred on 0.5 and 15% wider than bozo, which this sum reproduces.
+    let inner = inner_generator(pattern.noise_generator);
+    let mut sum = 0.5;
+    let mut f = 1.0;
+    for _ in 0..10 {
+        sum += (noise_with(p * f, inner) - 0.5) / f;
+        f *= 2.0;
+    }
+    let (gain, offset) = match pattern.noise_generator {
+        1 => WRINKLES_GENERATOR1,
+        3 => WRINKLES_GENERATOR3,
+        _ => (1.0, 0.0),
+    };
+    (gain * sum + offset).clamp(0.0, 1.0)
+}
+
+/// Ten wave sources at POV-Ray's measured positions, each a sine of the distance.
+fn ripples(pattern: &Pattern, p: DVec3) -> f64 {
+    let mut sum = 0.0;
+    for (s, _) in WAVE_SOURCES {
+        let d = p.distance(DVec3::from(s));
+        sum += (TAU * (d * pattern.frequency + pattern.phase)).sin();
+    }
+    0.5 + 0.5 * sum / WAVE_SOURCES.len() as f64
+}
+
+/// As ripples, with each source's own frequency, its amplitude falling with it.
+fn waves(pattern: &Pattern, p: DVec3) -> f64 {
+    let mut sum = 0.0;
+    for (s, f) in WAVE_SOURCES {
+        let d = p.distance(DVec3::from(s));
+        sum += (TAU * (d * f * pattern.frequency + pattern.phase)).sin() / f;
+    }
+    0.5 + 0.2 * sum / WAVE_SOURCES.len() as f64
 }
 
 /// Marble, wood and agate read the classic turbulence (when given) themselves.

@@ -1,5 +1,6 @@
 use glam::{DVec2, DVec3};
 
+use super::blend::{Blend, blend_position, mix};
 use super::pattern::{pattern_index, pattern_value};
 use std::f64::consts::{PI, TAU};
 
@@ -108,43 +109,6 @@ pub fn image_colour(im: &ImageMap, p: DVec3) -> Colour {
     c.filter += im.filter_all;
     c.transmit += im.transmit_all;
     c
-}
-
-/// Where a value falls in a blend map: one entry, or between entry i and i + 1.
-pub enum Blend {
-    None,
-    One(usize),
-    Two(usize, f64),
-}
-
-/// POV-Ray's blend-map lookup: values below the first entry take the first, above the last
-/// the last; between two entries the colours mix linearly (all five channels); equal
-/// values make a sharp step.
-pub fn blend_position<T>(map: &[T], v: f64, key: impl Fn(&T) -> f64) -> Blend {
-    let n = map.len();
-    if n == 0 {
-        return Blend::None;
-    }
-    if v <= key(&map[0]) {
-        return Blend::One(0);
-    }
-    for i in 1..n {
-        let hi = key(&map[i]);
-        if v < hi {
-            let lo = key(&map[i - 1]);
-            let t = if hi > lo { (v - lo) / (hi - lo) } else { 1.0 };
-            return Blend::Two(i - 1, t);
-        }
-    }
-    Blend::One(n - 1)
-}
-
-pub fn mix(a: &Colour, b: &Colour, t: f64) -> Colour {
-    Colour {
-        rgb: a.rgb + (b.rgb - a.rgb) * t,
-        filter: a.filter + (b.filter - a.filter) * t,
-        transmit: a.transmit + (b.transmit - a.transmit) * t,
-    }
 }
 
 #[cfg(test)]

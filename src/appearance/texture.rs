@@ -7,10 +7,10 @@ use glam::DVec3;
 use crate::geometry::TexturePoint;
 use crate::scene::{Colour, Finish, Pigment, PigmentKind, Texture, TextureMap};
 
+use super::blend::{Blend, blend_position, mix};
 use super::evaluate_pigment;
 use super::normal::perturb;
 use super::pattern::pattern_value;
-use super::pigment::{Blend, blend_position, mix};
 
 /// At most this many layers are shaded; POV-Ray scenes rarely stack more than a few.
 pub const MAX_LAYERS: usize = 8;

@@ -173,7 +173,7 @@ impl PreparedArea {
         let (u, v) = match mode {
             AreaLightMode::Continuous => {
                 if self.circular {
-                    let (x, y) = super::concentric_disc(s1, s2);
+                    let (x, y) = super::sampler::concentric_disc(s1, s2);
                     (0.5 * x, 0.5 * y)
                 } else {
                     (s1 - 0.5, s2 - 0.5)
@@ -282,7 +282,6 @@ impl PreparedArea {
             fn differ(a: DVec3, b: DVec3, colour: DVec3) -> bool {
                 ((a - b) * colour).abs().element_sum() > 0.1
             }
-            #[allow(clippy::too_many_arguments)]
             fn rect(
                 get: &mut dyn FnMut(usize, usize) -> DVec3,
                 (u1, v1, u2, v2): (usize, usize, usize, usize),

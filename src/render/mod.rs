@@ -1,6 +1,7 @@
 //! Rendering: the sampler, the integrator, lights, the film, and the one loop that owns
 //! tiles, threads and progress.
 
+pub mod dimensions;
 pub mod film;
 pub mod integrator;
 pub mod lights;
@@ -22,6 +23,8 @@ pub use sampler::PixelSampler;
 
 use crate::geometry::Ray;
 use crate::scene::Camera;
+use dimensions::Purpose;
+use sampler::concentric_disc;
 
 const TILE: usize = 16;
 
@@ -127,23 +130,6 @@ pub fn camera_ray(camera: &Camera, x: f64, y: f64, lens: (f64, f64)) -> Ray {
         + camera.right.normalize_or(DVec3::X) * (dx * radius)
         + camera.up.normalize_or(DVec3::Y) * (dy * radius);
     Ray::new(origin, (focus - origin).normalize_or(DVec3::Z))
-}
-
-/// Maps the unit square to the unit disc keeping areas and strata (Shirley and Chiu).
-pub(crate) fn concentric_disc(u: f64, v: f64) -> (f64, f64) {
-    let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
-    if a == 0.0 && b == 0.0 {
-        return (0.0, 0.0);
-    }
-    let (r, phi) = if a.abs() > b.abs() {
-        (a, std::f64::consts::FRAC_PI_4 * (b / a))
-    } else {
-        (
-            b,
-            std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a / b),
-        )
-    };
-    (r * phi.cos(), r * phi.sin())
 }
 
 /// Renders into a film. Each pixel's samples are taken in index order by one thread, and
@@ -298,11 +284,8 @@ fn render_pass(
         .collect();
     let total = tiles.len() as u64;
     let done = AtomicU64::new(0);
-    let mut integrator = Integrator::new(scene);
-    integrator.roulette = options.roulette;
-    integrator.area_lights = options.area_lights;
-    integrator.splitting = options.splitting;
-    integrator.light_samples = options.light_samples;
+    let integrator = Integrator::new(scene, options);
+    let layout = integrator.layout();
     let new_sampler = |spp: u32| {
         if options.stratified {
             PixelSampler::new(spp)
@@ -332,9 +315,11 @@ fn render_pass(
                 let mut square = 0.0;
                 for index in range {
                     sampler.start(x as u32, y as u32, index, seed);
+                    sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
                     let (u, v) = sampler.get_2d();
                     let sx = (x as f64 + u) / w as f64 - 0.5;
                     let sy = 0.5 - (y as f64 + v) / h as f64;
+                    sampler.set_dimension(layout.dimension(0, Purpose::Lens));
                     let lens = sampler.get_2d();
                     let ray = camera_ray(&scene.camera, sx, sy, lens);
                     let l = integrator.radiance(&ray, &mut sampler, &mut counts);

@@ -12,6 +12,7 @@ use crate::scene::{
     Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere, Texture,
 };
 
+use super::dimensions::{DimensionLayout, OptionalDecisions};
 use super::lights::PreparedLight;
 
 /// How the traced values of a scene computed in gamma space become linear light.
@@ -63,6 +64,12 @@ pub struct PreparedScene {
 }
 
 impl PreparedScene {
+    /// Which sampler dimension each decision reads: it depends on the lights (and the
+    /// optional decisions the scene makes), never on the objects.
+    pub fn dimension_layout(&self) -> DimensionLayout {
+        DimensionLayout::new(self.lights.len(), OptionalDecisions::default())
+    }
+
     pub fn new(scene: &Scene) -> PreparedScene {
         let mut builder = Builder {
             world: WorldBuilder::default(),
@@ -175,29 +182,7 @@ impl Builder {
             Shape::Union(children)
             | Shape::Merge(children)
             | Shape::Intersection(children)
-            | Shape::Difference(children) => {
-                let op = match &object.shape {
-                    Shape::Union(_) => CsgOp::Union,
-                    Shape::Merge(_) => CsgOp::Merge,
-                    Shape::Intersection(_) => CsgOp::Intersection,
-                    _ => CsgOp::Difference,
-                };
-                let child_looks = Looks {
-                    flags: ObjectFlags {
-                        inverse: false,
-                        ..f
-                    },
-                    ..looks
-                };
-                let items: Vec<Item> = children
-                    .iter()
-                    .filter_map(|c| self.object(c, child_looks, false))
-                    .collect();
-                if items.is_empty() {
-                    return None;
-                }
-                self.world.csg(op, items, f.inverse)
-            }
+            | Shape::Difference(children) => self.csg(&object.shape, children, looks)?,
             Shape::Mesh(mesh) => {
                 let items: Vec<Item> = mesh
                     .triangles
@@ -213,32 +198,10 @@ impl Builder {
             Shape::SmoothTriangle { corners, normals } => {
                 self.triangle(*corners, Some(*normals), object, looks)?
             }
-            shape => {
-                let (kind, local) = self.shape_kind(shape)?;
-                let transform = match local {
-                    Some(frame) => frame.then(&object.transform),
-                    None => object.transform,
-                };
-                let material = self.material(looks);
-                let uv = if looks.texture.uses_uv() {
-                    flags::UV
-                } else {
-                    0
-                };
-                self.world
-                    .primitive(kind, &transform, material, mask(f) | uv)
-            }
+            shape => self.primitive(shape, object, looks)?,
         };
         let item = if clipped {
-            let mut parts = vec![item];
-            let clip_looks = Looks {
-                flags: ObjectFlags::default(),
-                ..looks
-            };
-            for clip in &object.clipped_by {
-                parts.extend(self.object(clip, clip_looks, false));
-            }
-            self.world.csg(CsgOp::Clip, parts, false)
+            self.clipped(item, object, looks)
         } else {
             item
         };
@@ -246,6 +209,63 @@ impl Builder {
             self.world.add_top(item);
         }
         Some(item)
+    }
+
+    /// A CSG node of `shape`'s kind over its children, which do not inherit `inverse`.
+    fn csg(&mut self, shape: &Shape, children: &[Object], looks: Looks<'_>) -> Option<Item> {
+        let op = match shape {
+            Shape::Union(_) => CsgOp::Union,
+            Shape::Merge(_) => CsgOp::Merge,
+            Shape::Intersection(_) => CsgOp::Intersection,
+            _ => CsgOp::Difference,
+        };
+        let child_looks = Looks {
+            flags: ObjectFlags {
+                inverse: false,
+                ..looks.flags
+            },
+            ..looks
+        };
+        let items: Vec<Item> = children
+            .iter()
+            .filter_map(|c| self.object(c, child_looks, false))
+            .collect();
+        if items.is_empty() {
+            return None;
+        }
+        Some(self.world.csg(op, items, looks.flags.inverse))
+    }
+
+    /// A single shape with its object's transform (after the shape's own frame).
+    fn primitive(&mut self, shape: &Shape, object: &Object, looks: Looks<'_>) -> Option<Item> {
+        let (kind, local) = self.shape_kind(shape)?;
+        let transform = match local {
+            Some(frame) => frame.then(&object.transform),
+            None => object.transform,
+        };
+        let material = self.material(looks);
+        let uv = if looks.texture.uses_uv() {
+            flags::UV
+        } else {
+            0
+        };
+        Some(
+            self.world
+                .primitive(kind, &transform, material, mask(looks.flags) | uv),
+        )
+    }
+
+    /// `item` clipped by the object's `clipped_by` shapes, which keep no flags of their own.
+    fn clipped(&mut self, item: Item, object: &Object, looks: Looks<'_>) -> Item {
+        let mut parts = vec![item];
+        let clip_looks = Looks {
+            flags: ObjectFlags::default(),
+            ..looks
+        };
+        for clip in &object.clipped_by {
+            parts.extend(self.object(clip, clip_looks, false));
+        }
+        self.world.csg(CsgOp::Clip, parts, false)
     }
 
     fn material(&mut self, looks: Looks<'_>) -> u32 {

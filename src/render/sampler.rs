@@ -120,6 +120,23 @@ fn mix(mut z: u64) -> u64 {
     z ^ (z >> 31)
 }
 
+/// Maps the unit square to the unit disc keeping areas and strata (Shirley and Chiu).
+pub(crate) fn concentric_disc(u: f64, v: f64) -> (f64, f64) {
+    let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
+    if a == 0.0 && b == 0.0 {
+        return (0.0, 0.0);
+    }
+    let (r, phi) = if a.abs() > b.abs() {
+        (a, std::f64::consts::FRAC_PI_4 * (b / a))
+    } else {
+        (
+            b,
+            std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a / b),
+        )
+    };
+    (r * phi.cos(), r * phi.sin())
+}
+
 /// A pseudo-random permutation of 0..len applied to `i`, without storing the permutation:
 /// Kensler's hash-based bijection ("Correlated Multi-Jittered Sampling", 2013), made
 /// exact on 0..len by cycle walking.

@@ -1,0 +1,91 @@
+//! Which interiors a ray is inside.
+
+/// Nested interiors deeper than this are treated as the innermost one.
+const DEPTH: usize = 8;
+
+/// The interiors a ray is inside, innermost last, with their indices of refraction. POV-Ray
+/// keeps interiors, not surfaces: a ray inside an interior that meets any part of the object
+/// owning it leaves that interior, whichever way the part faces (measured: a glass box and a
+/// cylinder of one object meeting face to face, or overlapping, turn a ray back by total
+/// internal reflection at the box's top as if air were beyond, exactly as with a gap).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct InteriorStack {
+    ids: [u32; DEPTH],
+    iors: [f64; DEPTH],
+    len: usize,
+}
+
+impl InteriorStack {
+    pub(super) const OUTSIDE: InteriorStack = InteriorStack {
+        ids: [u32::MAX; DEPTH],
+        iors: [1.0; DEPTH],
+        len: 0,
+    };
+
+    /// The index of refraction the ray travels in.
+    pub(super) fn current(&self) -> f64 {
+        if self.len == 0 {
+            1.0
+        } else {
+            self.iors[self.len - 1]
+        }
+    }
+
+    pub(super) fn contains(&self, id: u32) -> bool {
+        self.ids[..self.len].contains(&id)
+    }
+
+    pub(super) fn entered(&self, id: u32, ior: f64) -> InteriorStack {
+        let mut m = *self;
+        let slot = m.len.min(DEPTH - 1);
+        m.ids[slot] = id;
+        m.iors[slot] = ior;
+        m.len = slot + 1;
+        m
+    }
+
+    /// Without the interior `id` (the innermost one when the ray did not know it was in it,
+    /// as a camera inside an object).
+    pub(super) fn left(&self, id: u32) -> InteriorStack {
+        let mut m = *self;
+        match m.ids[..m.len].iter().rposition(|&i| i == id) {
+            Some(k) => {
+                m.ids.copy_within(k + 1..m.len, k);
+                m.iors.copy_within(k + 1..m.len, k);
+                m.len -= 1;
+            }
+            None => m.len = m.len.saturating_sub(1),
+        }
+        m
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn entering_and_leaving_nest() {
+        let glass = InteriorStack::OUTSIDE.entered(1, 1.5);
+        let water = glass.entered(2, 1.33);
+        assert_eq!(water.current(), 1.33);
+        // Leaving the outer interior first keeps the inner one.
+        let w = water.left(1);
+        assert!(!w.contains(1) && w.contains(2));
+        assert_eq!(w.current(), 1.33);
+        assert_eq!(water.left(2).current(), 1.5);
+        // Leaving an interior the ray did not know it was in drops the innermost.
+        assert_eq!(glass.left(7).current(), 1.0);
+        assert_eq!(InteriorStack::OUTSIDE.left(3).current(), 1.0);
+    }
+
+    #[test]
+    fn too_deep_nesting_replaces_the_innermost() {
+        let mut s = InteriorStack::OUTSIDE;
+        for id in 0..20 {
+            s = s.entered(id, 1.0 + id as f64);
+        }
+        assert_eq!(s.current(), 20.0);
+        assert!(s.contains(19) && !s.contains(8));
+    }
+}

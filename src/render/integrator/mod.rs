@@ -1,0 +1,615 @@
+//! The integrator answers one question: what radiance comes back along a ray. It is
+//! POV-Ray's recursive Whitted tracer (ambient, diffuse, highlights, shadow rays through
+//! filtering objects, mirror reflection, refraction) with stochastic changes that keep
+//! POV-Ray's expectation: area-light visibility is estimated from one grid point drawn with
+//! POV-Ray's weights, the deterministic adc_bailout cut is replaced by Russian roulette
+//! (expectation: the max_trace_level-capped tree), and where a surface both reflects and
+//! refracts, one branch may be chosen at random in proportion to its weight.
+
+//!
+//! A reader's map: [`Integrator::trace`] finds the hit and builds one [`Shading`] record,
+//! `shade` composites the texture's layers (each lit by `direct.rs`), then follows the
+//! reflected and transmitted branches (`secondary`). Every random decision reads the
+//! sampler dimension [`DimensionLayout`] assigns to it. `optics.rs` holds Fresnel,
+//! refraction and fade; `interiors.rs` the stack of interiors a ray is inside.
+
+mod direct;
+mod interiors;
+mod optics;
+
+pub use optics::{fresnel, refract};
+
+use glam::DVec3;
+
+use crate::appearance::finish::{metallic_tint, reflectivity};
+use crate::appearance::{evaluate_pigment, perturbed_normal, texture_layers};
+use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
+use crate::scene::{Colour, Finish};
+
+use super::RenderOptions;
+use super::dimensions::{DimensionLayout, Purpose};
+use super::lights::AreaLightMode;
+use super::prepared::{Material, PreparedScene};
+use super::sampler::PixelSampler;
+use direct::ShadedLayer;
+use interiors::InteriorStack;
+use optics::{fade, mirror_direction};
+
+/// Below this path weight, Russian roulette starts.
+const ROULETTE_WEIGHT: f64 = 0.1;
+/// The smallest survival probability, which bounds the variance roulette can add.
+const ROULETTE_MIN_Q: f64 = 0.05;
+
+/// Rays traced, by kind, for the statistics line.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RayCounts {
+    pub camera: u64,
+    pub shadow: u64,
+    pub secondary: u64,
+}
+
+impl RayCounts {
+    pub fn add(&mut self, o: &RayCounts) {
+        self.camera += o.camera;
+        self.shadow += o.shadow;
+        self.secondary += o.secondary;
+    }
+
+    pub fn total(&self) -> u64 {
+        self.camera + self.shadow + self.secondary
+    }
+}
+
+/// What to do where a ray tree splits into a reflected and a refracted branch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Splitting {
+    /// Trace both branches, as POV-Ray does.
+    #[default]
+    Both,
+    /// Trace one, chosen with probability proportional to its weight, divided by that
+    /// probability: the same expectation at about half the rays per level.
+    One,
+}
+
+/// The state a ray carries down the tree.
+#[derive(Clone, Copy, Debug)]
+struct Path {
+    /// Surfaces along the path so far, 1 for the camera ray: POV-Ray returns black for a
+    /// ray whose level exceeds max_trace_level.
+    level: u32,
+    /// Product of the branch weights (max components), for roulette.
+    weight: f64,
+    skip: u8,
+    interiors: InteriorStack,
+}
+
+/// Everything shading needs to know about one hit, built once per hit in `trace`.
+struct Shading<'s> {
+    /// The hit point with its outward geometric normal (`surface.normal`).
+    surface: SurfacePoint,
+    /// The incoming ray's unit direction.
+    d: DVec3,
+    /// The shading normal, perturbed by the texture's `normal`, turned to face the ray.
+    n: DVec3,
+    material: &'s Material,
+    /// Whether the ray leaves the material's interior here (see [`InteriorStack`]).
+    leaving: bool,
+    /// A ray that crossed this object's interior to get here fades, but only in what the
+    /// surface lets through from beyond: POV-Ray leaves the surface's own shading (its
+    /// highlights seen from inside) and its internal reflection unfaded (measured: a
+    /// transparent sphere's inner highlight keeps its full strength at fade_power 0, whose
+    /// fade halves what is seen through the sphere; shadow rays do not fade at power 0).
+    fade_through: DVec3,
+    /// Where shadow rays start: just off the surface, on the ray's side.
+    shadow_origin: DVec3,
+    path: Path,
+}
+
+/// What the texture's layers leave for the secondary rays: the top layer's pigment and
+/// finish, which decide reflection, and what all the layers together let through.
+struct Top<'f> {
+    pigment: Colour,
+    finish: &'f Finish,
+    through: DVec3,
+}
+
+/// Where a surface sends the rest of the light, and how much of it, per channel.
+struct Branches {
+    mirror: DVec3,
+    reflect: DVec3,
+    /// The transmitted direction; `None` under total internal reflection.
+    refracted: Option<DVec3>,
+    /// The same index of refraction on both sides: the ray goes on straight and counts no
+    /// trace level.
+    straight: bool,
+    transmit: DVec3,
+    /// The interiors beyond the surface.
+    beyond: InteriorStack,
+}
+
+/// Which branches to follow, each with the probability it was chosen with.
+struct Choice {
+    reflect: Option<f64>,
+    transmit: Option<f64>,
+}
+
+pub struct Integrator<'a> {
+    scene: &'a PreparedScene,
+    layout: DimensionLayout,
+    roulette: bool,
+    splitting: Splitting,
+    area_lights: AreaLightMode,
+    /// Shadow rays per area light per shading point (more where soft shadows dominate the
+    /// noise; each camera sample then costs more).
+    light_samples: u32,
+}
+
+impl<'a> Integrator<'a> {
+    pub fn new(scene: &'a PreparedScene, options: &RenderOptions) -> Integrator<'a> {
+        Integrator {
+            scene,
+            layout: scene.dimension_layout(),
+            roulette: options.roulette,
+            splitting: options.splitting,
+            area_lights: options.area_lights,
+            light_samples: options.light_samples,
+        }
+    }
+
+    /// Which sampler dimension each decision reads; the camera's come first.
+    pub fn layout(&self) -> &DimensionLayout {
+        &self.layout
+    }
+
+    /// Radiance along a camera ray.
+    pub fn radiance(&self, ray: &Ray, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
+        counts.camera += 1;
+        let path = Path {
+            level: 1,
+            weight: 1.0,
+            skip: flags::NO_IMAGE,
+            interiors: InteriorStack::OUTSIDE,
+        };
+        let l = self.trace(ray, path, sampler, counts);
+        match self.scene.output_gamma {
+            // Per sample, as POV-Ray decodes each traced ray; where the estimate is noisy
+            // (area lights) the curve's bend adds a small bias (docs/differences.md).
+            Some(g) => l.map(|c| g.decode(c)),
+            None => l,
+        }
+    }
+
+    fn trace(
+        &self,
+        ray: &Ray,
+        path: Path,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        match self.scene.world.intersect(ray, f64::INFINITY, path.skip) {
+            Some(hit) => self.shade(&self.shading(ray, &hit, path), sampler, counts),
+            None => self.sky(ray.direction),
+        }
+    }
+
+    fn shading(&self, ray: &Ray, hit: &Hit, path: Path) -> Shading<'a> {
+        let surface = self.scene.world.surface(ray, hit);
+        let material = &self.scene.materials[surface.material as usize];
+        let d = ray.direction.normalize();
+        // The ray meets the surface from behind, and whether it leaves the interior (the
+        // two differ where parts of one object touch or overlap).
+        let back = surface.normal.dot(d) > 0.0;
+        let leaving = back || path.interiors.contains(material.interior_id);
+        let fade_through = if leaving && material.interior.fade_distance > 0.0 {
+            fade(material, hit.t * ray.direction.length())
+        } else {
+            DVec3::ONE
+        };
+        let facing = if back {
+            -surface.shading_normal
+        } else {
+            surface.shading_normal
+        };
+        Shading {
+            n: perturbed_normal(&material.texture, &surface, facing),
+            shadow_origin: offset_point(surface.point, surface.normal, -d),
+            surface,
+            d,
+            material,
+            leaving,
+            fade_through,
+            path,
+        }
+    }
+
+    /// The surface's own colour, layer by layer, then what it reflects and transmits.
+    fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
+        let layers = texture_layers(&s.material.texture, &s.surface);
+        let mut colour = DVec3::ZERO;
+        // Layers composite top first: each lets through what its own opacity does not cover.
+        let mut through = DVec3::ONE;
+        let mut top: Option<(Colour, &Finish)> = None;
+        for layer in layers.iter() {
+            let c = layer.colour;
+            let shaded = ShadedLayer {
+                pigment: c,
+                finish: layer.finish,
+                att: c.opacity(self.scene.legacy),
+            };
+            colour += through * self.surface_light(s, &shaded, sampler, counts);
+            top.get_or_insert((c, layer.finish));
+            through *= c.rgb * c.filter + DVec3::splat(c.transmit);
+            if through == DVec3::ZERO {
+                break;
+            }
+        }
+        let Some((pigment, finish)) = top else {
+            return colour;
+        };
+        if s.path.level >= self.scene.settings.max_trace_level {
+            return colour;
+        }
+        let top = Top {
+            pigment,
+            finish,
+            through,
+        };
+        self.secondary(s, &top, colour, sampler, counts)
+    }
+
+    /// Adds the reflected and transmitted light to the surface's own `colour`.
+    fn secondary(
+        &self,
+        s: &Shading,
+        top: &Top,
+        mut colour: DVec3,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        let b = branches(s, top);
+        let (reflect_weight, transmit_weight) = (b.reflect.max_element(), b.transmit.max_element());
+        if reflect_weight <= 0.0 && transmit_weight <= 0.0 {
+            return colour;
+        }
+        let choice = self.choose(s.path.level, reflect_weight, transmit_weight, sampler);
+        if let Some(p) = choice.reflect
+            && let Some(c) = self.reflected(s, &b, top.finish, p, sampler, counts)
+        {
+            colour += c;
+        }
+        if let Some(p) = choice.transmit
+            && let Some(c) = self.transmitted(s, &b, p, sampler, counts)
+        {
+            colour += c;
+        }
+        colour
+    }
+
+    /// Both branches, or under `--splitting one` one of them at random in proportion to
+    /// its weight.
+    fn choose(
+        &self,
+        level: u32,
+        reflect: f64,
+        transmit: f64,
+        sampler: &mut PixelSampler,
+    ) -> Choice {
+        let mut choice = Choice {
+            reflect: (reflect > 0.0).then_some(1.0),
+            transmit: (transmit > 0.0).then_some(1.0),
+        };
+        if self.splitting == Splitting::One && choice.reflect.is_some() && choice.transmit.is_some()
+        {
+            sampler.set_dimension(self.layout.dimension(level, Purpose::Splitting));
+            let u = sampler.get_1d();
+            let pr = reflect / (reflect + transmit);
+            if u < pr {
+                choice = Choice {
+                    reflect: Some(pr),
+                    transmit: None,
+                };
+            } else {
+                choice = Choice {
+                    reflect: None,
+                    transmit: Some(1.0 - pr),
+                };
+            }
+        }
+        choice
+    }
+
+    /// The mirror reflection, chosen with probability `chosen`; `None` where roulette ends it.
+    fn reflected(
+        &self,
+        s: &Shading,
+        b: &Branches,
+        finish: &Finish,
+        chosen: f64,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> Option<DVec3> {
+        let path = &s.path;
+        let weight = path.weight * b.reflect.max_element() / chosen;
+        let e = finish.reflection.exponent;
+        let q = self.survival(weight, e == 1.0);
+        if q <= 0.0 || !self.survives(q, path.level, Purpose::RouletteReflection, sampler) {
+            return None;
+        }
+        let ray = Ray::new(
+            offset_point(s.surface.point, s.surface.normal, b.mirror),
+            b.mirror,
+        );
+        counts.secondary += 1;
+        let next = Path {
+            level: path.level + 1,
+            weight: weight / q,
+            skip: flags::NO_REFLECTION,
+            interiors: path.interiors,
+        };
+        let incoming = self.trace(&ray, next, sampler, counts);
+        let incoming = if e == 1.0 {
+            incoming
+        } else {
+            incoming.max(DVec3::ZERO).powf(1.0 / e)
+        };
+        Some(b.reflect * incoming / (q * chosen))
+    }
+
+    /// The transmitted light, chosen with probability `chosen`; `None` where roulette ends
+    /// it. An index of refraction of 1 goes on straight without counting a trace level;
+    /// total internal reflection sends the transmitted part along the mirror direction.
+    fn transmitted(
+        &self,
+        s: &Shading,
+        b: &Branches,
+        chosen: f64,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> Option<DVec3> {
+        let path = &s.path;
+        let weight = path.weight * b.transmit.max_element() / chosen;
+        let q = self.survival(weight, true);
+        if q <= 0.0 || !self.survives(q, path.level, Purpose::RouletteTransmission, sampler) {
+            return None;
+        }
+        let (dir, level, interiors, skip) = match b.refracted {
+            Some(_) if b.straight => (s.d, path.level, b.beyond, path.skip),
+            Some(dir) => (dir, path.level + 1, b.beyond, path.skip & !flags::NO_IMAGE),
+            None => (b.mirror, path.level + 1, path.interiors, path.skip),
+        };
+        let ray = Ray::new(offset_point(s.surface.point, s.surface.normal, dir), dir);
+        counts.secondary += 1;
+        let next = Path {
+            level,
+            weight: weight / q,
+            skip,
+            interiors,
+        };
+        let incoming = self.trace(&ray, next, sampler, counts);
+        Some(b.transmit * incoming / (q * chosen))
+    }
+
+    /// What a ray that leaves the scene sees: the sky sphere's pigments, layered over the
+    /// background through their filter and transmit.
+    fn sky(&self, direction: DVec3) -> DVec3 {
+        let scene = self.scene;
+        let Some(sky) = &scene.sky_sphere else {
+            return scene.background.rgb;
+        };
+        let d = direction.normalize_or(DVec3::Z);
+        let mut colour = scene.background.rgb;
+        for pigment in &sky.pigments {
+            let c = evaluate_pigment(pigment, d);
+            let att = c.opacity(scene.legacy);
+            colour =
+                c.rgb * att * sky.emission + colour * (c.rgb * c.filter + DVec3::splat(c.transmit));
+        }
+        colour
+    }
+
+    /// Roulette's survival probability for a branch of this weight (1 when roulette is off,
+    /// the weight is large, or the branch enters non-linearly).
+    fn survival(&self, weight: f64, linear: bool) -> f64 {
+        if weight <= 0.0 {
+            return 0.0;
+        }
+        if self.roulette && linear && weight < ROULETTE_WEIGHT {
+            (weight / ROULETTE_WEIGHT).max(ROULETTE_MIN_Q)
+        } else {
+            1.0
+        }
+    }
+
+    fn survives(&self, q: f64, level: u32, purpose: Purpose, sampler: &mut PixelSampler) -> bool {
+        if q >= 1.0 {
+            return true;
+        }
+        sampler.set_dimension(self.layout.dimension(level, purpose));
+        sampler.get_1d() < q
+    }
+}
+
+/// The directions and weights of the reflected and transmitted branches at a hit.
+fn branches(s: &Shading, top: &Top) -> Branches {
+    let (eta_from, eta_to, beyond) = crossing(s);
+    let (d, n, geometric) = (s.d, s.n, s.surface.normal);
+    let cos_i = -d.dot(n);
+    let outside = if geometric.dot(d) > 0.0 {
+        -geometric
+    } else {
+        geometric
+    };
+    let mirror = mirror_direction(d, n, outside);
+    // `reflection { metallic }` tints the reflection as `metallic` tints highlights.
+    let reflect = surface_reflectivity(top.finish, cos_i, eta_from, eta_to)
+        * metallic_tint(top.finish.reflection.metallic, top.pigment.rgb, cos_i);
+    let eta = eta_from / eta_to;
+    let straight = (eta - 1.0).abs() < 1e-12;
+    // (Opaque surfaces transmit nothing: no refraction to compute.)
+    let refracted = if straight || top.through == DVec3::ZERO {
+        Some(d)
+    } else {
+        refract(d, n, eta)
+    };
+    let transmit = transmitted_weight(
+        top.through,
+        s.fade_through,
+        reflect,
+        refracted.is_none(),
+        top.finish.conserve_energy,
+    );
+    Branches {
+        mirror,
+        reflect,
+        refracted,
+        straight,
+        transmit,
+        beyond,
+    }
+}
+
+/// Indices of refraction on the ray's side and beyond the surface, and the interiors beyond.
+fn crossing(s: &Shading) -> (f64, f64, InteriorStack) {
+    let (id, ior) = (s.material.interior_id, s.material.interior.ior);
+    let inside = &s.path.interiors;
+    if s.leaving {
+        let beyond = inside.left(id);
+        let from = if inside.contains(id) {
+            ior
+        } else {
+            inside.current()
+        };
+        (from, beyond.current(), beyond)
+    } else {
+        (inside.current(), ior, inside.entered(id, ior))
+    }
+}
+
+/// Per-channel reflectivity: `reflection {min, max falloff}`, or Fresnel for light going
+/// from a medium of index `eta_from` into one of `eta_to`.
+fn surface_reflectivity(finish: &Finish, cos_i: f64, eta_from: f64, eta_to: f64) -> DVec3 {
+    let refl = &finish.reflection;
+    if refl.is_zero() {
+        return DVec3::ZERO;
+    }
+    if refl.fresnel {
+        let f = fresnel(cos_i.abs(), eta_to / eta_from);
+        return f * refl.max + (1.0 - f) * refl.min;
+    }
+    reflectivity(refl.min, refl.max, refl.falloff, cos_i)
+}
+
+/// The weight of the transmitted branch, from what the layers let through, the interior's
+/// fade and the reflectivity `r`. Under total internal reflection the light does not
+/// cross the surface: POV-Ray reflects all of it, the finish's reflection plus the rest
+/// along the same mirror direction, unfiltered by the surface's colour (measured on a glass
+/// box: filter 0.5 without reflection is exactly 2x and 4x brighter than the filtered
+/// estimate where rays reflect totally once and twice; with reflection 0.1 the two add to 1).
+/// With conserve_energy, what is reflected is not also transmitted.
+fn transmitted_weight(
+    through: DVec3,
+    fade: DVec3,
+    r: DVec3,
+    total_internal: bool,
+    conserve_energy: bool,
+) -> DVec3 {
+    if through == DVec3::ZERO {
+        through
+    } else if total_internal {
+        (DVec3::ONE - r).max(DVec3::ZERO) * fade
+    } else if conserve_energy {
+        through * fade * (DVec3::ONE - r)
+    } else {
+        through * fade
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn transmission_keeps_what_is_not_reflected() {
+        let through = DVec3::new(0.8, 0.4, 0.0);
+        let fade = DVec3::splat(0.5);
+        let r = DVec3::splat(0.25);
+        assert_eq!(
+            transmitted_weight(through, fade, r, false, false),
+            through * 0.5
+        );
+        assert_eq!(
+            transmitted_weight(through, fade, r, false, true),
+            through * 0.5 * 0.75
+        );
+        // Total internal reflection: all that is not reflected goes the mirror way,
+        // unfiltered by the surface colour.
+        assert_eq!(
+            transmitted_weight(through, fade, r, true, false),
+            DVec3::splat(0.75 * 0.5)
+        );
+        assert_eq!(
+            transmitted_weight(DVec3::ZERO, fade, r, true, true),
+            DVec3::ZERO
+        );
+    }
+
+    #[test]
+    fn fresnel_reflection_blends_min_and_max() {
+        let mut finish = Finish::default();
+        finish.reflection.min = DVec3::ZERO;
+        finish.reflection.max = DVec3::ONE;
+        finish.reflection.fresnel = true;
+        // Normal incidence from air into glass: 4%.
+        let r = surface_reflectivity(&finish, 1.0, 1.0, 1.5);
+        assert!((r - DVec3::splat(0.04)).length() < 1e-12, "{r}");
+        // Beyond the critical angle inside glass: all of it.
+        let r = surface_reflectivity(&finish, 0.2, 1.5, 1.0);
+        assert!((r - DVec3::ONE).length() < 1e-12, "{r}");
+    }
+
+    #[test]
+    fn roulette_survival_is_bounded_and_only_for_low_weights() {
+        let scene = PreparedScene::new(&crate::scene::Scene::default());
+        let on = Integrator::new(&scene, &RenderOptions::default());
+        assert_eq!(on.survival(0.5, true), 1.0);
+        assert_eq!(on.survival(0.05, true), 0.5);
+        assert_eq!(on.survival(1e-6, true), ROULETTE_MIN_Q);
+        assert_eq!(on.survival(0.05, false), 1.0);
+        assert_eq!(on.survival(0.0, true), 0.0);
+        let off = Integrator::new(
+            &scene,
+            &RenderOptions {
+                roulette: false,
+                ..RenderOptions::default()
+            },
+        );
+        assert_eq!(off.survival(1e-6, true), 1.0);
+    }
+
+    #[test]
+    fn dimensions_depend_on_the_lights_not_the_objects() {
+        let scene = |spheres: usize, lights: usize| {
+            let mut src = String::new();
+            for i in 0..spheres {
+                src += &format!("sphere {{ <{i}, 0, 0>, 0.4 pigment {{ rgb 1 }} }}\n");
+            }
+            for i in 0..lights {
+                src += &format!("light_source {{ <{i}, 5, -5> rgb 1 }}\n");
+            }
+            let loaded = crate::lang::load_scene_source("t.pov", &src, &Default::default());
+            PreparedScene::new(&loaded.expect("scene loads").scene)
+        };
+        let options = RenderOptions::default();
+        let (one, many) = (scene(1, 2), scene(200, 2));
+        let a = *Integrator::new(&one, &options).layout();
+        let b = *Integrator::new(&many, &options).layout();
+        assert_eq!(a, b);
+        let other = scene(1, 3);
+        assert_ne!(a, *Integrator::new(&other, &options).layout());
+        for level in 1..=one.settings.max_trace_level {
+            for p in a.level_purposes() {
+                assert_eq!(a.dimension(level, p), b.dimension(level, p));
+            }
+        }
+    }
+}
