@@ -3,7 +3,7 @@ use super::png_file::validate;
 use super::{Image, OutputError};
 use exr::prelude::{
     AnyChannel, AnyChannels, AttributeValue, Encoding, FlatSamples, Layer, LayerAttributes,
-    ReadChannels, ReadLayers, SmallVec, Text, WritableImage,
+    LineOrder, ReadChannels, ReadLayers, SmallVec, Text, WritableImage,
 };
 use std::path::Path;
 
@@ -133,7 +133,7 @@ pub fn write_exr(
     let layer = Layer::new(
         (image.width, image.height),
         layer_attributes,
-        Encoding::FAST_LOSSLESS,
+        DETERMINISTIC_LOSSLESS,
         AnyChannels::sort(channels),
     );
     let exr_image = exr::prelude::Image::from_layer(layer);
@@ -144,6 +144,15 @@ pub fn write_exr(
             .map_err(|e| exr_error(path, e))
     })
 }
+
+/// RLE on 64x64 tiles (the crate's fast lossless choice) with the chunks written in
+/// increasing order: with the crate's default, unspecified order, chunks land in the order
+/// the compression threads finish them, so the same pixels gave different bytes from run
+/// to run, and farms compare files by their hash.
+const DETERMINISTIC_LOSSLESS: Encoding = Encoding {
+    line_order: LineOrder::Increasing,
+    ..Encoding::FAST_LOSSLESS
+};
 
 fn push_rgb(channels: &mut SmallVec<[AnyChannel<FlatSamples>; 4]>, prefix: &str, image: &Image) {
     for (c, letter) in ["R", "G", "B"].iter().enumerate() {
