@@ -196,9 +196,10 @@ struct ConvergeArgs {
     scene_args: SceneArgs,
 }
 
-// The clap spellings of library enums. Each maps to its library enum in exactly one `From`
-// impl, all of them together below, so a new variant cannot be forgotten on one side: the
-// matches are exhaustive.
+// The command line's spellings of library enums (the library, in src/render and src/output,
+// does not depend on clap). Each maps to its library enum in one `From` impl, the three side
+// by side below: a variant added here does not compile until it is mapped, and one added to
+// the library is added in this one place.
 
 #[derive(Clone, Copy, ValueEnum)]
 enum AreaMode {
