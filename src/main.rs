@@ -37,146 +37,169 @@ struct SceneArgs {
 #[derive(Subcommand)]
 enum Command {
     /// Render a scene to PNG (sRGB) or OpenEXR (linear), chosen by the output's extension.
-    Render {
-        scene: PathBuf,
-        /// Output file (.png or .exr); default: the scene's name with .png, here.
-        #[arg(short, long)]
-        output: Option<PathBuf>,
-        #[arg(long, default_value_t = 320)]
-        width: u32,
-        #[arg(long, default_value_t = 240)]
-        height: u32,
-        /// Samples per pixel.
-        #[arg(long, default_value_t = 16)]
-        spp: u32,
-        #[arg(long, default_value_t = 0)]
-        seed: u64,
-        /// Worker threads (default: one per core). The image does not depend on it.
-        #[arg(long)]
-        threads: Option<usize>,
-        /// Bits per channel for PNG output.
-        #[arg(long, value_enum, default_value = "8")]
-        bit_depth: Depth,
-        /// No progress bar and no summary line.
-        #[arg(short, long)]
-        quiet: bool,
-        /// `pov`: POV-Ray's grid of point lights (converges to POV-Ray's image);
-        /// `continuous`: the ideal emitter the grid approximates.
-        #[arg(long, value_enum, default_value = "pov")]
-        area_lights: AreaMode,
-        /// Where a ray both reflects and refracts: trace `both` branches, or `one` chosen
-        /// at random in proportion to its weight.
-        #[arg(long, value_enum, default_value = "both")]
-        splitting: Split,
-        /// Shadow rays per area light at each shading point.
-        #[arg(long, default_value_t = 1)]
-        light_samples: u32,
-        /// Spend the samples where a pilot pass finds noise (same average per pixel).
-        #[arg(long)]
-        adaptive: bool,
-        /// Leave out features penumbra does not support (with a warning) instead of stopping.
-        #[arg(long)]
-        skip_unsupported: bool,
-        #[command(flatten)]
-        scene_args: SceneArgs,
-    },
+    Render(RenderArgs),
     /// Parse and evaluate scenes without rendering, and summarise them.
-    Check {
-        #[arg(required = true)]
-        scenes: Vec<PathBuf>,
-        /// Leave out features penumbra does not support (with a warning) instead of stopping.
-        #[arg(long)]
-        skip_unsupported: bool,
-        #[command(flatten)]
-        scene_args: SceneArgs,
-    },
+    Check(CheckArgs),
     /// Render a converged reference with the installed POV-Ray: k times the size without
     /// anti-aliasing, k x k blocks averaged, written as linear OpenEXR (with the k/2 render
     /// beside it, whose difference bounds the reference's own error).
-    Reference {
-        scene: PathBuf,
-        #[arg(short, long)]
-        output: PathBuf,
-        #[arg(long, default_value_t = 160)]
-        width: u32,
-        #[arg(long, default_value_t = 120)]
-        height: u32,
-        #[arg(long, default_value_t = 16)]
-        supersample: u32,
-        #[command(flatten)]
-        scene_args: SceneArgs,
-    },
+    Reference(ReferenceArgs),
     /// Compare an image with a reference (EXR linear, PNG decoded from sRGB): RMSE, relMSE,
     /// mean and max absolute error; with --replicates, noise sqrt(V) and bias sqrt(B) apart.
-    Compare {
-        /// The image to judge (the first replicate).
-        image: PathBuf,
-        /// The reference; a `penumbra reference` EXR also lends its k/2 layer to the bias.
-        reference: PathBuf,
-        /// More independent renders of the same scene (different seeds).
-        #[arg(long, num_args = 1.., value_name = "IMAGE")]
-        replicates: Vec<PathBuf>,
-        /// Write the signed difference (mean of the images minus the reference) as a PNG.
-        #[arg(long, value_name = "OUT.png")]
-        diff: Option<PathBuf>,
-        /// Colour scale of --diff: +-this maps to full red/blue (default: the 99th
-        /// percentile of |difference|).
-        #[arg(long, value_name = "S")]
-        diff_scale: Option<f64>,
-    },
+    Compare(CompareArgs),
     /// Geometry benchmark: camera and shadow rays per second on 1e3, 1e5, 1e6 spheres, BVH
     /// build time and memory per object, and the wall time against POV-Ray on a `#while`
     /// scene. Prints figures; not a timed test.
-    Bench {
-        /// Sphere counts for the ray-rate table.
-        #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000])]
-        counts: Vec<usize>,
-        /// Rays of each kind per count.
-        #[arg(long, default_value_t = 200_000)]
-        rays: usize,
-        /// Sphere counts for the side-by-side run against POV-Ray (rounded to cubes); `0`
-        /// skips it.
-        #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000])]
-        povray_counts: Vec<usize>,
-        #[arg(long, default_value_t = 320)]
-        width: u32,
-        #[arg(long, default_value_t = 240)]
-        height: u32,
-    },
+    Bench(BenchArgs),
     /// Error against time: K seeds at each sample count against a reference, optionally
     /// POV-Ray at its quality settings; writes a CSV, charts (SVG, PNG) and a summary.
-    Converge {
-        scene: PathBuf,
-        /// A reference written by `penumbra reference` (fixes the image size).
-        #[arg(long)]
-        reference: PathBuf,
-        /// Samples per pixel, comma-separated.
-        #[arg(long, value_delimiter = ',', default_value = "1,4,16,64,256")]
-        spp: Vec<u32>,
-        /// Replicates (seeds) per sample count, at least 2.
-        #[arg(long, default_value_t = 4)]
-        seeds: u32,
-        /// Also time POV-Ray at -A, +A0.3, +AM2 +R3 and +AM2 +R4.
-        #[arg(long)]
-        povray: bool,
-        #[arg(long, default_value = "converge")]
-        output_dir: PathBuf,
-        /// Threads for penumbra and POV-Ray (default: one per core).
-        #[arg(long)]
-        threads: Option<usize>,
-        /// Independent samples instead of stratified ones (the N^-1/2 baseline).
-        #[arg(long)]
-        independent: bool,
-        /// Target errors for the time-to-reach table, comma-separated.
-        #[arg(long, value_delimiter = ',', default_value = "0.01,0.005")]
-        targets: Vec<f64>,
-        /// No progress lines.
-        #[arg(short, long)]
-        quiet: bool,
-        #[command(flatten)]
-        scene_args: SceneArgs,
-    },
+    Converge(ConvergeArgs),
 }
+
+#[derive(clap::Args)]
+struct RenderArgs {
+    scene: PathBuf,
+    /// Output file (.png or .exr); default: the scene's name with .png, here.
+    #[arg(short, long)]
+    output: Option<PathBuf>,
+    #[arg(long, default_value_t = 320)]
+    width: u32,
+    #[arg(long, default_value_t = 240)]
+    height: u32,
+    /// Samples per pixel.
+    #[arg(long, default_value_t = 16)]
+    spp: u32,
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Worker threads (default: one per core). The image does not depend on it.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Bits per channel for PNG output.
+    #[arg(long, value_enum, default_value = "8")]
+    bit_depth: Depth,
+    /// No progress bar and no summary line.
+    #[arg(short, long)]
+    quiet: bool,
+    /// `pov`: POV-Ray's grid of point lights (converges to POV-Ray's image);
+    /// `continuous`: the ideal emitter the grid approximates.
+    #[arg(long, value_enum, default_value = "pov")]
+    area_lights: AreaMode,
+    /// Where a ray both reflects and refracts: trace `both` branches, or `one` chosen
+    /// at random in proportion to its weight.
+    #[arg(long, value_enum, default_value = "both")]
+    splitting: Split,
+    /// Shadow rays per area light at each shading point.
+    #[arg(long, default_value_t = 1)]
+    light_samples: u32,
+    /// Spend the samples where a pilot pass finds noise (same average per pixel).
+    #[arg(long)]
+    adaptive: bool,
+    /// Leave out features penumbra does not support (with a warning) instead of stopping.
+    #[arg(long)]
+    skip_unsupported: bool,
+    #[command(flatten)]
+    scene_args: SceneArgs,
+}
+
+#[derive(clap::Args)]
+struct CheckArgs {
+    #[arg(required = true)]
+    scenes: Vec<PathBuf>,
+    /// Leave out features penumbra does not support (with a warning) instead of stopping.
+    #[arg(long)]
+    skip_unsupported: bool,
+    #[command(flatten)]
+    scene_args: SceneArgs,
+}
+
+#[derive(clap::Args)]
+struct ReferenceArgs {
+    scene: PathBuf,
+    #[arg(short, long)]
+    output: PathBuf,
+    #[arg(long, default_value_t = 160)]
+    width: u32,
+    #[arg(long, default_value_t = 120)]
+    height: u32,
+    #[arg(long, default_value_t = 16)]
+    supersample: u32,
+    #[command(flatten)]
+    scene_args: SceneArgs,
+}
+
+#[derive(clap::Args)]
+struct CompareArgs {
+    /// The image to judge (the first replicate).
+    image: PathBuf,
+    /// The reference; a `penumbra reference` EXR also lends its k/2 layer to the bias.
+    reference: PathBuf,
+    /// More independent renders of the same scene (different seeds).
+    #[arg(long, num_args = 1.., value_name = "IMAGE")]
+    replicates: Vec<PathBuf>,
+    /// Write the signed difference (mean of the images minus the reference) as a PNG.
+    #[arg(long, value_name = "OUT.png")]
+    diff: Option<PathBuf>,
+    /// Colour scale of --diff: +-this maps to full red/blue (default: the 99th
+    /// percentile of |difference|).
+    #[arg(long, value_name = "S")]
+    diff_scale: Option<f64>,
+}
+
+#[derive(clap::Args)]
+struct BenchArgs {
+    /// Sphere counts for the ray-rate table.
+    #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000])]
+    counts: Vec<usize>,
+    /// Rays of each kind per count.
+    #[arg(long, default_value_t = 200_000)]
+    rays: usize,
+    /// Sphere counts for the side-by-side run against POV-Ray (rounded to cubes); `0`
+    /// skips it.
+    #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000])]
+    povray_counts: Vec<usize>,
+    #[arg(long, default_value_t = 320)]
+    width: u32,
+    #[arg(long, default_value_t = 240)]
+    height: u32,
+}
+
+#[derive(clap::Args)]
+struct ConvergeArgs {
+    scene: PathBuf,
+    /// A reference written by `penumbra reference` (fixes the image size).
+    #[arg(long)]
+    reference: PathBuf,
+    /// Samples per pixel, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "1,4,16,64,256")]
+    spp: Vec<u32>,
+    /// Replicates (seeds) per sample count, at least 2.
+    #[arg(long, default_value_t = 4)]
+    seeds: u32,
+    /// Also time POV-Ray at -A, +A0.3, +AM2 +R3 and +AM2 +R4.
+    #[arg(long)]
+    povray: bool,
+    #[arg(long, default_value = "converge")]
+    output_dir: PathBuf,
+    /// Threads for penumbra and POV-Ray (default: one per core).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Independent samples instead of stratified ones (the N^-1/2 baseline).
+    #[arg(long)]
+    independent: bool,
+    /// Target errors for the time-to-reach table, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "0.01,0.005")]
+    targets: Vec<f64>,
+    /// No progress lines.
+    #[arg(short, long)]
+    quiet: bool,
+    #[command(flatten)]
+    scene_args: SceneArgs,
+}
+
+// The command line's spellings of library enums (the library, in src/render and src/output,
+// does not depend on clap). Each maps to its library enum in one `From` impl, the three side
+// by side below: a variant added here does not compile until it is mapped, and one added to
+// the library is added in this one place.
 
 #[derive(Clone, Copy, ValueEnum)]
 enum AreaMode {
@@ -196,6 +219,33 @@ enum Depth {
     Eight,
     #[value(name = "16")]
     Sixteen,
+}
+
+impl From<AreaMode> for AreaLightMode {
+    fn from(mode: AreaMode) -> Self {
+        match mode {
+            AreaMode::Pov => AreaLightMode::Pov,
+            AreaMode::Continuous => AreaLightMode::Continuous,
+        }
+    }
+}
+
+impl From<Split> for Splitting {
+    fn from(split: Split) -> Self {
+        match split {
+            Split::Both => Splitting::Both,
+            Split::One => Splitting::One,
+        }
+    }
+}
+
+impl From<Depth> for BitDepth {
+    fn from(depth: Depth) -> Self {
+        match depth {
+            Depth::Eight => BitDepth::Eight,
+            Depth::Sixteen => BitDepth::Sixteen,
+        }
+    }
 }
 
 fn parse_declare(s: &str) -> Result<(String, f64), String> {
@@ -218,15 +268,6 @@ fn parse_declare(s: &str) -> Result<(String, f64), String> {
     Ok((name.to_string(), value))
 }
 
-struct Bar(ProgressBar);
-
-impl Progress for Bar {
-    fn advance(&self, done: u64, total: u64) {
-        self.0.set_length(total);
-        self.0.set_position(done);
-    }
-}
-
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
@@ -238,6 +279,181 @@ fn main() -> ExitCode {
     }
 }
 
+fn run(cli: Cli) -> Result<ExitCode, String> {
+    match cli.command {
+        Command::Render(args) => render(args),
+        Command::Check(args) => Ok(check(args)),
+        Command::Reference(args) => reference(args),
+        Command::Compare(args) => compare(args),
+        Command::Bench(args) => bench(args),
+        Command::Converge(args) => converge(args),
+    }
+}
+
+fn render(args: RenderArgs) -> Result<ExitCode, String> {
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| default_output(&args.scene));
+    let loaded = load_scene_with(
+        &args.scene,
+        &load_options(&args.scene_args, args.width, args.height),
+        args.skip_unsupported,
+    )
+    .map_err(text)?;
+    print_warnings(&loaded.warnings);
+    let bar = progress_bar(!args.quiet && std::io::stderr().is_terminal());
+    let (image, stats) =
+        penumbra::render_scene(&loaded.scene, &args.render_options(), &Bar(bar.clone()))
+            .map_err(text)?;
+    bar.finish_and_clear();
+    write_image(&output, &image, args.bit_depth.into()).map_err(text)?;
+    if !args.quiet {
+        eprintln!(
+            "{}: {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
+            output.display(),
+            stats.wall.as_secs_f64(),
+            stats.samples,
+            stats.rays_per_second() / 1e6,
+            stats.rays.total()
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+impl RenderArgs {
+    fn render_options(&self) -> RenderOptions {
+        RenderOptions {
+            width: self.width as usize,
+            height: self.height as usize,
+            samples_per_pixel: self.spp,
+            seed: self.seed,
+            threads: self.threads,
+            area_lights: self.area_lights.into(),
+            splitting: self.splitting.into(),
+            light_samples: self.light_samples,
+            adaptive: self.adaptive,
+            ..RenderOptions::default()
+        }
+    }
+}
+
+/// Loads every scene (at the default render size), printing its summary or its diagnostic;
+/// fails if any scene did.
+fn check(args: CheckArgs) -> ExitCode {
+    let mut failed = false;
+    for path in &args.scenes {
+        let options = load_options(&args.scene_args, 320, 240);
+        match load_scene_with(path, &options, args.skip_unsupported) {
+            Ok(loaded) => {
+                eprint!("{}", loaded.debug);
+                print_warnings(&loaded.warnings);
+                println!(
+                    "{}: {}",
+                    path.display(),
+                    penumbra::lang::check_summary(&loaded)
+                );
+            }
+            Err(d) => {
+                eprintln!("{d}");
+                failed = true;
+            }
+        }
+    }
+    if failed {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn reference(args: ReferenceArgs) -> Result<ExitCode, String> {
+    let request = ReferenceRequest {
+        scene: args.scene,
+        width: args.width,
+        height: args.height,
+        supersample: args.supersample,
+        declares: args.scene_args.declares,
+        include_paths: args.scene_args.include_paths,
+    };
+    let reference = render_reference(&request).map_err(text)?;
+    write_reference(&args.output, &reference).map_err(text)?;
+    eprintln!(
+        "{}: POV-Ray took {:.2} s",
+        args.output.display(),
+        reference.povray_seconds
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+fn compare(args: CompareArgs) -> Result<ExitCode, String> {
+    let target =
+        study_compare::read_target(&args.reference).map_err(|e| format!("reference: {e}"))?;
+    let mut images = Vec::new();
+    for path in std::iter::once(&args.image).chain(&args.replicates) {
+        let target = study_compare::read_target(path).map_err(|e| format!("image: {e}"))?;
+        images.push(target.image);
+    }
+    let comparison = study_compare::compare_to(&images, &target).map_err(text)?;
+    print!("{comparison}");
+    if let Some(path) = args.diff {
+        let scale = study_compare::write_diff(&path, &images, &target.image, args.diff_scale)
+            .map_err(text)?;
+        println!("{}: signed difference, scale +-{scale:.5}", path.display());
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn bench(args: BenchArgs) -> Result<ExitCode, String> {
+    let options = penumbra::study::bench::BenchOptions {
+        counts: args.counts,
+        rays: args.rays,
+        povray_counts: args.povray_counts.into_iter().filter(|&n| n > 0).collect(),
+        width: args.width,
+        height: args.height,
+        penumbra: std::env::current_exe().map_err(text)?,
+    };
+    penumbra::study::bench::run(&options, |line| println!("{line}"));
+    Ok(ExitCode::SUCCESS)
+}
+
+fn converge(args: ConvergeArgs) -> Result<ExitCode, String> {
+    let output_dir = args.output_dir.clone();
+    let log = StderrLog { quiet: args.quiet };
+    let report = study_converge::converge(&args.request(), &log).map_err(text)?;
+    print!("{}", study_converge::summary_markdown(&report));
+    println!(
+        "wrote {}/converge.csv, error_vs_time.svg/.png, error_vs_spp.svg/.png, summary.md",
+        output_dir.display()
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+impl ConvergeArgs {
+    fn request(self) -> study_converge::ConvergeRequest {
+        study_converge::ConvergeRequest {
+            scene: self.scene,
+            declares: self.scene_args.declares,
+            include_paths: self.scene_args.include_paths,
+            reference: self.reference,
+            spp: self.spp,
+            seeds: self.seeds,
+            povray: self.povray,
+            output_dir: self.output_dir,
+            threads: self.threads,
+            stratified: !self.independent,
+            targets: self.targets,
+        }
+    }
+}
+
+// What the subcommands share.
+
+/// Errors reach the user as their message.
+fn text(error: impl std::fmt::Display) -> String {
+    error.to_string()
+}
+
 fn load_options(args: &SceneArgs, width: u32, height: u32) -> LoadOptions {
     LoadOptions {
         declares: args.declares.clone(),
@@ -247,221 +463,34 @@ fn load_options(args: &SceneArgs, width: u32, height: u32) -> LoadOptions {
     }
 }
 
-fn run(cli: Cli) -> Result<ExitCode, String> {
-    match cli.command {
-        Command::Render {
-            scene,
-            output,
-            width,
-            height,
-            spp,
-            seed,
-            threads,
-            bit_depth,
-            quiet,
-            area_lights,
-            splitting,
-            light_samples,
-            adaptive,
-            skip_unsupported,
-            scene_args,
-        } => {
-            let output = output.unwrap_or_else(|| default_output(&scene));
-            let loaded = load_scene_with(
-                &scene,
-                &load_options(&scene_args, width, height),
-                skip_unsupported,
-            )
-            .map_err(|d| d.to_string())?;
-            for w in &loaded.warnings {
-                eprintln!("{w}");
-            }
-            let options = RenderOptions {
-                width: width as usize,
-                height: height as usize,
-                samples_per_pixel: spp,
-                seed,
-                threads,
-                area_lights: match area_lights {
-                    AreaMode::Pov => AreaLightMode::Pov,
-                    AreaMode::Continuous => AreaLightMode::Continuous,
-                },
-                splitting: match splitting {
-                    Split::Both => Splitting::Both,
-                    Split::One => Splitting::One,
-                },
-                light_samples,
-                adaptive,
-                ..RenderOptions::default()
-            };
-            let show = !quiet && std::io::stderr().is_terminal();
-            let bar = ProgressBar::with_draw_target(
-                Some(1),
-                if show {
-                    ProgressDrawTarget::stderr()
-                } else {
-                    ProgressDrawTarget::hidden()
-                },
-            );
-            if let Ok(style) =
-                ProgressStyle::with_template("{bar:40} {percent:>3}%  eta {eta}  {msg}")
-            {
-                bar.set_style(style);
-            }
-            let (image, stats) = penumbra::render_scene(&loaded.scene, &options, &Bar(bar.clone()))
-                .map_err(|e| e.to_string())?;
-            bar.finish_and_clear();
-            let depth = match bit_depth {
-                Depth::Eight => BitDepth::Eight,
-                Depth::Sixteen => BitDepth::Sixteen,
-            };
-            write_image(&output, &image, depth).map_err(|e| e.to_string())?;
-            if !quiet {
-                eprintln!(
-                    "{}: {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
-                    output.display(),
-                    stats.wall.as_secs_f64(),
-                    stats.samples,
-                    stats.rays_per_second() / 1e6,
-                    stats.rays.total()
-                );
-            }
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Check {
-            scenes,
-            skip_unsupported,
-            scene_args,
-        } => {
-            let mut failed = false;
-            for path in &scenes {
-                let options = load_options(&scene_args, 320, 240);
-                match load_scene_with(path, &options, skip_unsupported) {
-                    Ok(loaded) => {
-                        eprint!("{}", loaded.debug);
-                        for w in &loaded.warnings {
-                            eprintln!("{w}");
-                        }
-                        println!(
-                            "{}: {}",
-                            path.display(),
-                            penumbra::lang::check_summary(&loaded)
-                        );
-                    }
-                    Err(d) => {
-                        eprintln!("{d}");
-                        failed = true;
-                    }
-                }
-            }
-            Ok(if failed {
-                ExitCode::FAILURE
-            } else {
-                ExitCode::SUCCESS
-            })
-        }
-        Command::Reference {
-            scene,
-            output,
-            width,
-            height,
-            supersample,
-            scene_args,
-        } => {
-            let request = ReferenceRequest {
-                scene,
-                width,
-                height,
-                supersample,
-                declares: scene_args.declares,
-                include_paths: scene_args.include_paths,
-            };
-            let reference = render_reference(&request).map_err(|e| e.to_string())?;
-            write_reference(&output, &reference).map_err(|e| e.to_string())?;
-            eprintln!(
-                "{}: POV-Ray took {:.2} s",
-                output.display(),
-                reference.povray_seconds
-            );
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Compare {
-            image,
-            reference,
-            replicates,
-            diff,
-            diff_scale,
-        } => {
-            let target =
-                study_compare::read_target(&reference).map_err(|e| format!("reference: {e}"))?;
-            let mut images = Vec::new();
-            for path in std::iter::once(&image).chain(&replicates) {
-                let target = study_compare::read_target(path).map_err(|e| format!("image: {e}"))?;
-                images.push(target.image);
-            }
-            let comparison =
-                study_compare::compare_to(&images, &target).map_err(|e| e.to_string())?;
-            print!("{comparison}");
-            if let Some(path) = diff {
-                let scale = study_compare::write_diff(&path, &images, &target.image, diff_scale)
-                    .map_err(|e| e.to_string())?;
-                println!("{}: signed difference, scale +-{scale:.5}", path.display());
-            }
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Bench {
-            counts,
-            rays,
-            povray_counts,
-            width,
-            height,
-        } => {
-            let options = penumbra::study::bench::BenchOptions {
-                counts,
-                rays,
-                povray_counts: povray_counts.into_iter().filter(|&n| n > 0).collect(),
-                width,
-                height,
-                penumbra: std::env::current_exe().map_err(|e| e.to_string())?,
-            };
-            penumbra::study::bench::run(&options, |line| println!("{line}"));
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Converge {
-            scene,
-            reference,
-            spp,
-            seeds,
-            povray,
-            output_dir,
-            threads,
-            independent,
-            targets,
-            quiet,
-            scene_args,
-        } => {
-            let request = study_converge::ConvergeRequest {
-                scene,
-                declares: scene_args.declares,
-                include_paths: scene_args.include_paths,
-                reference,
-                spp,
-                seeds,
-                povray,
-                output_dir: output_dir.clone(),
-                threads,
-                stratified: !independent,
-                targets,
-            };
-            let log = StderrLog { quiet };
-            let report = study_converge::converge(&request, &log).map_err(|e| e.to_string())?;
-            print!("{}", study_converge::summary_markdown(&report));
-            println!(
-                "wrote {}/converge.csv, error_vs_time.svg/.png, error_vs_spp.svg/.png, summary.md",
-                output_dir.display()
-            );
-            Ok(ExitCode::SUCCESS)
-        }
+fn print_warnings(warnings: &[impl std::fmt::Display]) {
+    for w in warnings {
+        eprintln!("{w}");
+    }
+}
+
+/// A render's progress bar on stderr; hidden (but still counting) when `show` is false.
+fn progress_bar(show: bool) -> ProgressBar {
+    let bar = ProgressBar::with_draw_target(
+        Some(1),
+        if show {
+            ProgressDrawTarget::stderr()
+        } else {
+            ProgressDrawTarget::hidden()
+        },
+    );
+    if let Ok(style) = ProgressStyle::with_template("{bar:40} {percent:>3}%  eta {eta}  {msg}") {
+        bar.set_style(style);
+    }
+    bar
+}
+
+struct Bar(ProgressBar);
+
+impl Progress for Bar {
+    fn advance(&self, done: u64, total: u64) {
+        self.0.set_length(total);
+        self.0.set_position(done);
     }
 }
 

@@ -1,18 +1,16 @@
 //! The command line as a user meets it: output files, determinism across thread counts, and
 //! errors that point at the source.
 
-use std::path::PathBuf;
+use penumbra::study::TempDir;
 use std::process::Command;
 
 fn penumbra() -> Command {
     Command::new(env!("CARGO_BIN_EXE_penumbra"))
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("penumbra-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+/// A fresh folder, removed when the test ends (passed or failed).
+fn scratch(name: &str) -> TempDir {
+    TempDir::new(&format!("cli-{name}")).expect("temp dir")
 }
 
 fn scene(name: &str) -> String {
@@ -21,7 +19,8 @@ fn scene(name: &str) -> String {
 
 #[test]
 fn one_and_two_threads_give_byte_identical_exr() {
-    let dir = scratch("threads");
+    let temp = scratch("threads");
+    let dir = temp.path();
     let mut outputs = Vec::new();
     for threads in [1, 2] {
         let out = dir.join(format!("t{threads}.exr"));
@@ -48,7 +47,8 @@ fn one_and_two_threads_give_byte_identical_exr() {
 
 #[test]
 fn png_is_written_and_seeds_change_the_noise() {
-    let dir = scratch("png");
+    let temp = scratch("png");
+    let dir = temp.path();
     let render = |seed: &str, name: &str| {
         let out = dir.join(name);
         let status = penumbra()
@@ -74,7 +74,8 @@ fn png_is_written_and_seeds_change_the_noise() {
 
 #[test]
 fn a_malformed_scene_points_at_the_error_and_writes_nothing() {
-    let dir = scratch("broken");
+    let temp = scratch("broken");
+    let dir = temp.path();
     let source = dir.join("broken.pov");
     std::fs::write(
         &source,
@@ -104,7 +105,7 @@ fn a_malformed_scene_points_at_the_error_and_writes_nothing() {
         "no caret under the span:\n{stderr}"
     );
     assert!(!out.exists(), "an output file was written");
-    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+    let leftovers: Vec<_> = std::fs::read_dir(dir)
         .expect("list")
         .map(|e| e.expect("entry").file_name())
         .collect();

@@ -9,10 +9,10 @@
 //! below is ten times that.
 
 use penumbra::output::{Image, write_exr};
+use penumbra::study::TempDir;
 use penumbra::study::compare::{Target, compare_to};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use std::path::PathBuf;
 use std::process::Command;
 
 const W: usize = 160;
@@ -98,11 +98,9 @@ fn penumbra() -> Command {
     Command::new(env!("CARGO_BIN_EXE_penumbra"))
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("penumbra-study-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+/// A fresh folder, removed when the test ends (passed or failed).
+fn scratch(name: &str) -> TempDir {
+    TempDir::new(&format!("study-{name}")).expect("temp dir")
 }
 
 /// The number after `label` in the command's output.
@@ -119,7 +117,8 @@ fn number_after(text: &str, label: &str) -> f64 {
 
 #[test]
 fn the_compare_command_splits_bias_and_writes_a_difference_image() {
-    let dir = scratch("compare");
+    let temp = scratch("compare");
+    let dir = temp.path();
     let reference_path = dir.join("reference.exr");
     write_exr(&reference_path, &reference(), &[], &[]).expect("write reference");
     let mut paths = Vec::new();
@@ -156,7 +155,8 @@ fn the_compare_command_splits_bias_and_writes_a_difference_image() {
 
 #[test]
 fn compare_reports_a_size_mismatch_and_a_missing_file() {
-    let dir = scratch("mismatch");
+    let temp = scratch("mismatch");
+    let dir = temp.path();
     let a = dir.join("a.exr");
     let b = dir.join("b.exr");
     write_exr(&a, &Image::filled(8, 8, [0.5; 3]), &[], &[]).expect("write");
@@ -188,7 +188,8 @@ fn compare_reports_a_size_mismatch_and_a_missing_file() {
 /// With no povray on PATH, `reference` and `converge --povray` stop at once and say why.
 #[test]
 fn study_commands_fail_clearly_without_povray() {
-    let dir = scratch("nopovray");
+    let temp = scratch("nopovray");
+    let dir = temp.path();
     let scene = format!("{}/scenes/checker.pov", env!("CARGO_MANIFEST_DIR"));
     let reference = format!(
         "{}/tests/references/checker.exr",
@@ -214,7 +215,7 @@ fn study_commands_fail_clearly_without_povray() {
     for args in runs {
         let output = penumbra()
             .args(&args)
-            .env("PATH", &dir)
+            .env("PATH", dir)
             .output()
             .expect("runs");
         let stderr = String::from_utf8_lossy(&output.stderr);

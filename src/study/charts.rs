@@ -139,24 +139,15 @@ fn log_range(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
 
 type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
+/// The log-log axes both charts are drawn on.
+type LogChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+
 fn draw_error_chart<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     chart: &ErrorChart,
 ) -> DrawResult<DB> {
     root.fill(&WHITE)?;
-    let xs = chart
-        .curves
-        .iter()
-        .flat_map(|c| c.points.iter().map(|p| p.x))
-        .chain(chart.markers.iter().map(|m| m.x));
-    let ys = chart
-        .curves
-        .iter()
-        .flat_map(|c| c.points.iter().flat_map(|p| [p.y, p.low, p.high]))
-        .chain(chart.markers.iter().map(|m| m.y))
-        .chain(chart.floors.iter().map(|f| f.1))
-        .chain(chart.targets.iter().copied());
-    let (Some((x0, x1)), Some((y0, y1))) = (log_range(xs), log_range(ys)) else {
+    let Some(((x0, x1), (y0, y1))) = axis_ranges(chart) else {
         // Nothing measurable: an empty chart with its title still says so.
         root.titled(&format!("{} (no data)", chart.title), (FONT, 22))?;
         return Ok(());
@@ -176,9 +167,47 @@ fn draw_error_chart<DB: DrawingBackend>(
         .y_label_formatter(&|v| format_number(*v))
         .light_line_style(RGBColor(0xee, 0xee, 0xee))
         .draw()?;
+    draw_targets(&mut ctx, &chart.targets, (x0, x1))?;
+    draw_floors(&mut ctx, &chart.floors, (x0, x1))?;
+    draw_slopes(&mut ctx, chart, x1)?;
+    for curve in &chart.curves {
+        draw_curve(&mut ctx, curve)?;
+    }
+    draw_markers(&mut ctx, &chart.markers)?;
+    ctx.configure_series_labels()
+        .position(SeriesLabelPosition::LowerLeft)
+        .label_font((FONT, 14))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()?;
+    Ok(())
+}
 
+/// The x and y ranges covering every point, marker, floor and target; `None` without data.
+fn axis_ranges(chart: &ErrorChart) -> Option<((f64, f64), (f64, f64))> {
+    let xs = chart
+        .curves
+        .iter()
+        .flat_map(|c| c.points.iter().map(|p| p.x))
+        .chain(chart.markers.iter().map(|m| m.x));
+    let ys = chart
+        .curves
+        .iter()
+        .flat_map(|c| c.points.iter().flat_map(|p| [p.y, p.low, p.high]))
+        .chain(chart.markers.iter().map(|m| m.y))
+        .chain(chart.floors.iter().map(|f| f.1))
+        .chain(chart.targets.iter().copied());
+    Some((log_range(xs)?, log_range(ys)?))
+}
+
+/// Dotted grey lines across the chart at the target errors.
+fn draw_targets<DB: DrawingBackend>(
+    ctx: &mut LogChart<'_, DB>,
+    targets: &[f64],
+    (x0, x1): (f64, f64),
+) -> DrawResult<DB> {
     let grey = RGBColor(0x99, 0x99, 0x99);
-    for &target in &chart.targets {
+    for &target in targets {
         ctx.draw_series(DashedLineSeries::new(
             [(x0, target), (x1, target)],
             2,
@@ -188,7 +217,16 @@ fn draw_error_chart<DB: DrawingBackend>(
         .label(format!("target {}", format_number(target)))
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], grey));
     }
-    for (index, (label, value)) in chart.floors.iter().enumerate() {
+    Ok(())
+}
+
+/// Dashed floors; one that is zero (or not finite) only appears in the legend.
+fn draw_floors<DB: DrawingBackend>(
+    ctx: &mut LogChart<'_, DB>,
+    floors: &[(String, f64)],
+    (x0, x1): (f64, f64),
+) -> DrawResult<DB> {
+    for (index, (label, value)) in floors.iter().enumerate() {
         let c = colour(3 + index);
         if *value <= 0.0 || !value.is_finite() {
             // Nothing to draw on a log axis, but the legend still says it was measured.
@@ -208,71 +246,85 @@ fn draw_error_chart<DB: DrawingBackend>(
         .label(format!("{label} = {}", format_number(*value)))
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
     }
-    if let Some(first) = chart.curves.first().and_then(|c| c.points.first()) {
-        for &slope in &chart.slopes {
-            let line = [
-                (first.x, first.y),
-                (x1, first.y * (x1 / first.x).powf(slope)),
-            ];
-            let c = RGBColor(0x55, 0x55, 0x55);
-            ctx.draw_series(DashedLineSeries::new(line, 3, 3, c.stroke_width(1)))?
-                .label(format!("slope {slope}"))
-                .legend(move |(x, y)| PathElement::new(vec![(x, y + 4), (x + 20, y - 4)], c));
-        }
+    Ok(())
+}
+
+/// Reference slopes from the first point of the first curve to the right edge.
+fn draw_slopes<DB: DrawingBackend>(
+    ctx: &mut LogChart<'_, DB>,
+    chart: &ErrorChart,
+    x1: f64,
+) -> DrawResult<DB> {
+    let Some(first) = chart.curves.first().and_then(|c| c.points.first()) else {
+        return Ok(());
+    };
+    for &slope in &chart.slopes {
+        let line = [
+            (first.x, first.y),
+            (x1, first.y * (x1 / first.x).powf(slope)),
+        ];
+        let c = RGBColor(0x55, 0x55, 0x55);
+        ctx.draw_series(DashedLineSeries::new(line, 3, 3, c.stroke_width(1)))?
+            .label(format!("slope {slope}"))
+            .legend(move |(x, y)| PathElement::new(vec![(x, y + 4), (x + 20, y - 4)], c));
     }
-    for curve in &chart.curves {
-        let c = colour(curve.colour);
-        let width = if curve.secondary { 1 } else { 2 };
-        // Zeros (a bias estimate clamped at 0) have no place on a log axis.
-        let points: Vec<(f64, f64)> = curve
-            .points
-            .iter()
-            .filter(|p| p.y > 0.0)
-            .map(|p| (p.x, p.y))
-            .collect();
-        ctx.draw_series(LineSeries::new(points.clone(), c.stroke_width(width)))?
-            .label(curve.label.as_str())
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(width))
-            });
-        if !curve.secondary {
-            ctx.draw_series(
-                points
-                    .iter()
-                    .map(|&(x, y)| Circle::new((x, y), 3, c.filled())),
-            )?;
-        }
-        // The spread over seeds: a vertical bar from the lowest to the highest replicate.
+    Ok(())
+}
+
+/// One curve: its line, dots at the measurements (primary curves only), and the spread
+/// over seeds.
+fn draw_curve<DB: DrawingBackend>(ctx: &mut LogChart<'_, DB>, curve: &Curve) -> DrawResult<DB> {
+    let c = colour(curve.colour);
+    let width = if curve.secondary { 1 } else { 2 };
+    // Zeros (a bias estimate clamped at 0) have no place on a log axis.
+    let points: Vec<(f64, f64)> = curve
+        .points
+        .iter()
+        .filter(|p| p.y > 0.0)
+        .map(|p| (p.x, p.y))
+        .collect();
+    ctx.draw_series(LineSeries::new(points.clone(), c.stroke_width(width)))?
+        .label(curve.label.as_str())
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(width)));
+    if !curve.secondary {
         ctx.draw_series(
-            curve
-                .points
+            points
                 .iter()
-                .filter(|p| p.high > p.low && p.low > 0.0)
-                .map(|p| PathElement::new(vec![(p.x, p.low), (p.x, p.high)], c.mix(0.6))),
+                .map(|&(x, y)| Circle::new((x, y), 3, c.filled())),
         )?;
     }
-    let pov = colour(1);
-    if !chart.markers.is_empty() {
-        ctx.draw_series(
-            chart
-                .markers
-                .iter()
-                .map(|m| Cross::new((m.x, m.y), 6, pov.stroke_width(2))),
-        )?
-        .label("POV-Ray (quality settings)")
-        .legend(move |(x, y)| Cross::new((x + 10, y), 6, pov.stroke_width(2)));
-        // Labels sit beside their cross, not on it, so the sign of "-A" stays readable.
-        ctx.draw_series(chart.markers.iter().map(|m| {
-            EmptyElement::at((m.x, m.y))
-                + Text::new(m.label.clone(), (9, -4), (FONT, 13).into_font().color(&pov))
-        }))?;
+    // The spread over seeds: a vertical bar from the lowest to the highest replicate.
+    ctx.draw_series(
+        curve
+            .points
+            .iter()
+            .filter(|p| p.high > p.low && p.low > 0.0)
+            .map(|p| PathElement::new(vec![(p.x, p.low), (p.x, p.high)], c.mix(0.6))),
+    )?;
+    Ok(())
+}
+
+/// POV-Ray's settings as labelled crosses.
+fn draw_markers<DB: DrawingBackend>(
+    ctx: &mut LogChart<'_, DB>,
+    markers: &[Marker],
+) -> DrawResult<DB> {
+    if markers.is_empty() {
+        return Ok(());
     }
-    ctx.configure_series_labels()
-        .position(SeriesLabelPosition::LowerLeft)
-        .label_font((FONT, 14))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()?;
+    let pov = colour(1);
+    ctx.draw_series(
+        markers
+            .iter()
+            .map(|m| Cross::new((m.x, m.y), 6, pov.stroke_width(2))),
+    )?
+    .label("POV-Ray (quality settings)")
+    .legend(move |(x, y)| Cross::new((x + 10, y), 6, pov.stroke_width(2)));
+    // Labels sit beside their cross, not on it, so the sign of "-A" stays readable.
+    ctx.draw_series(markers.iter().map(|m| {
+        EmptyElement::at((m.x, m.y))
+            + Text::new(m.label.clone(), (9, -4), (FONT, 13).into_font().color(&pov))
+    }))?;
     Ok(())
 }
 

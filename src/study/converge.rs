@@ -208,9 +208,38 @@ fn validate(req: &ConvergeRequest) -> Result<(), StudyError> {
     Ok(())
 }
 
+/// What every measurement of one study shares: the request, the loaded scene and its
+/// reference, and how to render and report.
+struct Study<'a> {
+    req: &'a ConvergeRequest,
+    reference: Reference,
+    scene: Scene,
+    /// Parse time, counted in each replicate's time.
+    load_seconds: f64,
+    threads: usize,
+    /// The scene's file stem, which starts every progress line.
+    name: String,
+    log: &'a dyn Log,
+}
+
 /// Runs the study, writing `converge.csv`, `error_vs_time.{svg,png}`,
 /// `error_vs_spp.{svg,png}` and `summary.md` into the output folder.
 pub fn converge(req: &ConvergeRequest, log: &dyn Log) -> Result<ConvergeReport, StudyError> {
+    let study = prepare(req, log)?;
+    let mut csv = Csv::create(&req.output_dir.join("converge.csv"))?;
+    let rows = measure_penumbra(&study, &mut csv)?;
+    let povray = if req.povray {
+        measure_povray(&study, &mut csv)?
+    } else {
+        Vec::new()
+    };
+    let report = build_report(study, rows, povray);
+    write_outputs(&req.output_dir, &report)?;
+    Ok(report)
+}
+
+/// Checks the request, reads the reference, creates the output folder and loads the scene.
+fn prepare<'a>(req: &'a ConvergeRequest, log: &'a dyn Log) -> Result<Study<'a>, StudyError> {
     validate(req)?;
     // Fail before minutes of rendering, not after.
     if req.povray {
@@ -233,26 +262,29 @@ pub fn converge(req: &ConvergeRequest, log: &dyn Log) -> Result<ConvergeReport, 
         source,
     })?;
     let (scene, load_seconds) = load(req, width, height)?;
-    let mut csv = Csv::create(&req.output_dir.join("converge.csv"))?;
-    let mut spp = req.spp.clone();
+    Ok(Study {
+        req,
+        reference,
+        scene,
+        load_seconds,
+        threads,
+        name,
+        log,
+    })
+}
+
+/// One row per distinct sample count, in increasing order, each appended to the CSV.
+fn measure_penumbra(study: &Study, csv: &mut Csv) -> Result<Vec<PenumbraRow>, StudyError> {
+    let mut spp = study.req.spp.clone();
     spp.sort_unstable();
     spp.dedup();
-
     let mut rows = Vec::new();
     for &n in &spp {
-        let row = measure_spp(
-            &scene,
-            &reference,
-            n,
-            req,
-            threads,
-            load_seconds,
-            &name,
-            log,
-        )?;
+        let row = measure_spp(study, n)?;
         csv.penumbra(&row)?;
-        log.line(&format!(
-            "{name}: spp {n}: {} s, RMSE {:.5} [{:.5}, {:.5}], noise {:.5}, bias {:.5}, tiles failed {}/{}",
+        study.log.line(&format!(
+            "{}: spp {n}: {} s, RMSE {:.5} [{:.5}, {:.5}], noise {:.5}, bias {:.5}, tiles failed {}/{}",
+            study.name,
             seconds3(row.seconds),
             row.rmse,
             row.rmse_low,
@@ -264,38 +296,47 @@ pub fn converge(req: &ConvergeRequest, log: &dyn Log) -> Result<ConvergeReport, 
         ));
         rows.push(row);
     }
+    Ok(rows)
+}
 
+/// One row per POV-Ray quality setting, each appended to the CSV.
+fn measure_povray(study: &Study, csv: &mut Csv) -> Result<Vec<PovrayRow>, StudyError> {
+    let (req, name) = (study.req, &study.name);
+    let request = ReferenceRequest {
+        scene: req.scene.clone(),
+        width: study.reference.full.width as u32,
+        height: study.reference.full.height as u32,
+        supersample: 2,
+        declares: req.declares.clone(),
+        include_paths: req.include_paths.clone(),
+    };
     let mut povray = Vec::new();
-    if req.povray {
-        let request = ReferenceRequest {
-            scene: req.scene.clone(),
-            width: width as u32,
-            height: height as u32,
-            supersample: 2,
-            declares: req.declares.clone(),
-            include_paths: req.include_paths.clone(),
+    for (setting, args) in POVRAY_SETTINGS {
+        study.log.line(&format!("{name}: POV-Ray {setting} ..."));
+        let run = render_povray(&request, args, Some(study.threads))?;
+        let rmse = metrics::rmse(&run.image, &study.reference.full)?;
+        let row = PovrayRow {
+            setting: setting.to_string(),
+            seconds: run.seconds,
+            // Never zero, so that it stays on a log axis.
+            net_seconds: run.reported_seconds.unwrap_or(run.seconds).max(1e-3),
+            rmse,
         };
-        for (setting, args) in POVRAY_SETTINGS {
-            log.line(&format!("{name}: POV-Ray {setting} ..."));
-            let run = render_povray(&request, args, Some(threads))?;
-            let rmse = metrics::rmse(&run.image, &reference.full)?;
-            let row = PovrayRow {
-                setting: setting.to_string(),
-                seconds: run.seconds,
-                // Never zero, so that it stays on a log axis.
-                net_seconds: run.reported_seconds.unwrap_or(run.seconds).max(1e-3),
-                rmse,
-            };
-            csv.povray(&row)?;
-            log.line(&format!(
-                "{name}: POV-Ray {setting}: {} s process, {} s parse + render, RMSE {rmse:.5}",
-                seconds3(row.seconds),
-                seconds3(row.net_seconds)
-            ));
-            povray.push(row);
-        }
+        csv.povray(&row)?;
+        study.log.line(&format!(
+            "{name}: POV-Ray {setting}: {} s process, {} s parse + render, RMSE {rmse:.5}",
+            seconds3(row.seconds),
+            seconds3(row.net_seconds)
+        ));
+        povray.push(row);
     }
+    Ok(povray)
+}
 
+/// The measurements with what is derived from them: times to reach the targets and the
+/// noise slope.
+fn build_report(study: Study, rows: Vec<PenumbraRow>, povray: Vec<PovrayRow>) -> ConvergeReport {
+    let req = study.req;
     let penumbra_points: Vec<(f64, f64)> = rows.iter().map(|r| (r.seconds, r.rmse)).collect();
     let povray_points: Vec<(f64, f64)> = povray.iter().map(|r| (r.net_seconds, r.rmse)).collect();
     let targets = req
@@ -308,28 +349,31 @@ pub fn converge(req: &ConvergeRequest, log: &dyn Log) -> Result<ConvergeReport, 
         })
         .collect();
     let noise_points: Vec<(f64, f64)> = rows.iter().map(|r| (f64::from(r.spp), r.noise)).collect();
-    let report = ConvergeReport {
-        scene: name,
-        width,
-        height,
-        threads,
+    ConvergeReport {
+        scene: study.name,
+        width: study.reference.full.width,
+        height: study.reference.full.height,
+        threads: study.threads,
         stratified: req.stratified,
         rows,
         povray,
         targets,
         noise_slope: log_log_slope(&noise_points),
-        reference_seconds: reference.povray_seconds,
-    };
-    write_charts(&req.output_dir, &report)?;
-    let summary = req.output_dir.join("summary.md");
-    std::fs::write(&summary, summary_markdown(&report)).map_err(|source| StudyError::Io {
+        reference_seconds: study.reference.povray_seconds,
+    }
+}
+
+/// The charts, `summary.md` and `speedup_row.md` (the CSV is written as rows come in).
+fn write_outputs(dir: &Path, report: &ConvergeReport) -> Result<(), StudyError> {
+    write_charts(dir, report)?;
+    let summary = dir.join("summary.md");
+    std::fs::write(&summary, summary_markdown(report)).map_err(|source| StudyError::Io {
         path: summary,
         source,
     })?;
-    let row = req.output_dir.join("speedup_row.md");
-    std::fs::write(&row, speed_up_cells(&report))
-        .map_err(|source| StudyError::Io { path: row, source })?;
-    Ok(report)
+    let row = dir.join("speedup_row.md");
+    std::fs::write(&row, speed_up_cells(report))
+        .map_err(|source| StudyError::Io { path: row, source })
 }
 
 fn load(req: &ConvergeRequest, width: usize, height: usize) -> Result<(Scene, f64), StudyError> {
@@ -344,17 +388,9 @@ fn load(req: &ConvergeRequest, width: usize, height: usize) -> Result<(Scene, f6
     Ok((loaded.scene, start.elapsed().as_secs_f64()))
 }
 
-#[allow(clippy::too_many_arguments)]
-fn measure_spp(
-    scene: &Scene,
-    reference: &Reference,
-    spp: u32,
-    req: &ConvergeRequest,
-    threads: usize,
-    load_seconds: f64,
-    name: &str,
-    log: &dyn Log,
-) -> Result<PenumbraRow, StudyError> {
+/// K replicates at `spp` samples per pixel, seeds `SEED_BASE + k`, folded into one row.
+fn measure_spp(study: &Study, spp: u32) -> Result<PenumbraRow, StudyError> {
+    let (req, reference) = (study.req, &study.reference);
     let mut images = Vec::new();
     let mut seconds = Vec::new();
     let mut rmse = Vec::new();
@@ -364,17 +400,18 @@ fn measure_spp(
             height: reference.full.height,
             samples_per_pixel: spp,
             seed: SEED_BASE + k,
-            threads: Some(threads),
+            threads: Some(study.threads),
             stratified: req.stratified,
             ..RenderOptions::default()
         };
         let start = Instant::now();
-        let (image, _) = crate::render_scene(scene, &options, &())
+        let (image, _) = crate::render_scene(&study.scene, &options, &())
             .map_err(|e| StudyError::Render(e.to_string()))?;
-        let s = load_seconds + start.elapsed().as_secs_f64();
+        let s = study.load_seconds + start.elapsed().as_secs_f64();
         let e = metrics::rmse(&image, &reference.full)?;
-        log.line(&format!(
-            "{name}: spp {spp}, seed {}/{}: {} s, RMSE {e:.5}",
+        study.log.line(&format!(
+            "{}: spp {spp}, seed {}/{}: {} s, RMSE {e:.5}",
+            study.name,
             k + 1,
             req.seeds,
             seconds3(s)
@@ -552,7 +589,34 @@ impl Csv {
 }
 
 fn write_charts(dir: &Path, report: &ConvergeReport) -> Result<(), StudyError> {
-    let band = |x: f64, y: f64, low: f64, high: f64| BandPoint { x, y, low, high };
+    let floors = floors(report);
+    charts::write_error_chart(
+        &dir.join("error_vs_time"),
+        &time_chart(report, floors.clone()),
+    )?;
+    charts::write_error_chart(&dir.join("error_vs_spp"), &spp_chart(report, floors))
+}
+
+fn band(x: f64, y: f64, low: f64, high: f64) -> BandPoint {
+    BandPoint { x, y, low, high }
+}
+
+/// The bias and the per-pixel floor at the largest sample count, drawn on both charts.
+fn floors(report: &ConvergeReport) -> Vec<(String, f64)> {
+    vec![
+        (
+            "penumbra bias sqrt(B)".to_string(),
+            report.bias_floor().unwrap_or(0.0),
+        ),
+        (
+            "per-pixel floor sqrt(MSE - V)".to_string(),
+            report.rows.last().map_or(0.0, |r| r.pixel_floor),
+        ),
+    ]
+}
+
+/// `error_vs_time`: penumbra's RMSE and noise against seconds, POV-Ray's settings as markers.
+fn time_chart(report: &ConvergeReport, floors: Vec<(String, f64)>) -> ErrorChart {
     let rmse_time: Vec<BandPoint> = report
         .rows
         .iter()
@@ -563,22 +627,12 @@ fn write_charts(dir: &Path, report: &ConvergeReport) -> Result<(), StudyError> {
         .iter()
         .map(|r| band(r.seconds, r.noise, r.noise, r.noise))
         .collect();
-    let floors = vec![
-        (
-            "penumbra bias sqrt(B)".to_string(),
-            report.bias_floor().unwrap_or(0.0),
-        ),
-        (
-            "per-pixel floor sqrt(MSE - V)".to_string(),
-            report.rows.last().map_or(0.0, |r| r.pixel_floor),
-        ),
-    ];
     let sampling = if report.stratified {
         "stratified"
     } else {
         "independent"
     };
-    let time_chart = ErrorChart {
+    ErrorChart {
         title: format!(
             "{}: error against time ({}x{}, {} threads)",
             report.scene, report.width, report.height, report.threads
@@ -608,12 +662,14 @@ fn write_charts(dir: &Path, report: &ConvergeReport) -> Result<(), StudyError> {
                 y: p.rmse,
             })
             .collect(),
-        floors: floors.clone(),
+        floors,
         slopes: vec![-0.5, -1.0],
         targets: DEFAULT_TARGETS.to_vec(),
-    };
-    charts::write_error_chart(&dir.join("error_vs_time"), &time_chart)?;
+    }
+}
 
+/// `error_vs_spp`: RMSE, noise and bias against samples per pixel.
+fn spp_chart(report: &ConvergeReport, floors: Vec<(String, f64)>) -> ErrorChart {
     let by_spp = |f: &dyn Fn(&PenumbraRow) -> (f64, f64, f64)| -> Vec<BandPoint> {
         report
             .rows
@@ -624,7 +680,7 @@ fn write_charts(dir: &Path, report: &ConvergeReport) -> Result<(), StudyError> {
             })
             .collect()
     };
-    let spp_chart = ErrorChart {
+    ErrorChart {
         title: format!("{}: error against samples per pixel", report.scene),
         x_label: "samples per pixel".into(),
         y_label: "error against the POV-Ray reference".into(),
@@ -652,8 +708,7 @@ fn write_charts(dir: &Path, report: &ConvergeReport) -> Result<(), StudyError> {
         floors,
         slopes: vec![-0.5, -1.0],
         targets: Vec::new(),
-    };
-    charts::write_error_chart(&dir.join("error_vs_spp"), &spp_chart)
+    }
 }
 
 /// The per-scene section body: the rows, POV-Ray's points, and the time-to-target table.

@@ -19,6 +19,7 @@ pub use self::metrics::{
 pub use self::reference::{
     Reference, ReferenceRequest, read_reference, render_povray, render_reference, write_reference,
 };
+pub use self::tempdir::TempDir;
 
 use crate::output::OutputError;
 use std::fmt;

@@ -5,12 +5,17 @@ static COUNTER: AtomicU64 = AtomicU64::new(0);
 
 /// A private directory under the system temp dir, removed with its contents on drop, so
 /// POV-Ray's intermediate files never outlive a render, even when it fails.
-pub(crate) struct TempDir {
+///
+/// Public so that the integration tests make their folders with it too and leave nothing
+/// behind in the temp dir, even when an assertion fails.
+#[derive(Debug)]
+pub struct TempDir {
     path: PathBuf,
 }
 
 impl TempDir {
-    pub(crate) fn new(tag: &str) -> std::io::Result<TempDir> {
+    /// Creates `penumbra-TAG-...` with a name no other process or call shares.
+    pub fn new(tag: &str) -> std::io::Result<TempDir> {
         let base = std::env::temp_dir();
         let nanos = std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
@@ -33,7 +38,7 @@ impl TempDir {
         Err(last_error.unwrap_or_else(|| std::io::Error::other("no unique temp dir name")))
     }
 
-    pub(crate) fn path(&self) -> &Path {
+    pub fn path(&self) -> &Path {
         &self.path
     }
 }
