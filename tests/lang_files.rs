@@ -6,7 +6,9 @@ mod probe;
 
 use std::path::{Path, PathBuf};
 
-use penumbra::lang::{Diagnostic, LoadOptions, Loaded, SourceFiles, load_reading_globals};
+use penumbra::lang::{
+    Diagnostic, LoadOptions, Loaded, Severity, SourceFiles, load_reading_globals,
+};
 
 /// Reads names relative to tests/lang, so diagnostics name files the same way on every
 /// machine (`diagnostics/macro_trace.pov:4:1`).
@@ -140,6 +142,17 @@ fn check_diagnostic(
                 hints[0].line, d.hints
             ));
         }
+    }
+    let severity = if e.kind == "warning" {
+        Severity::Warning
+    } else {
+        Severity::Error
+    };
+    if d.severity != severity {
+        out.push(format!(
+            "{}: expected {severity:?}, got {:?}",
+            e.line, d.severity
+        ));
     }
     let rendered = d.to_string();
     for n in notes {
