@@ -152,13 +152,26 @@ pub fn load_inner(
     files: &(dyn SourceFiles + Sync),
     skip_unsupported: bool,
 ) -> Result<Loaded, Diagnostic> {
+    load_reading_globals(name, source, options, files, skip_unsupported, &[]).map(|(l, _)| l)
+}
+
+/// [`load_inner`] that also returns the values the global identifiers `globals` have once
+/// the scene is read, printed as [`print_value`] does (`None` for an undefined one); for
+/// tests that check what a scene computed.
+pub fn load_reading_globals(
+    name: &str,
+    source: &str,
+    options: &LoadOptions,
+    files: &(dyn SourceFiles + Sync),
+    skip_unsupported: bool,
+    globals: &[String],
+) -> Result<(Loaded, Vec<Option<String>>), Diagnostic> {
+    let run = || evaluate(name, source, options, files, skip_unsupported, globals);
     std::thread::scope(|s| {
         let handle = std::thread::Builder::new()
             .name("penumbra-lang".into())
             .stack_size(EVAL_STACK_BYTES)
-            .spawn_scoped(s, || {
-                evaluate(name, source, options, files, skip_unsupported)
-            });
+            .spawn_scoped(s, run);
         match handle {
             Ok(h) => h.join().unwrap_or_else(|_| {
                 Err(Diagnostic::error(
@@ -167,7 +180,7 @@ pub fn load_inner(
                 ))
             }),
             // No thread (resource limits): read on this one.
-            Err(_) => evaluate(name, source, options, files, skip_unsupported),
+            Err(_) => run(),
         }
     })
 }
@@ -178,7 +191,8 @@ fn evaluate(
     options: &LoadOptions,
     files: &dyn SourceFiles,
     skip_unsupported: bool,
-) -> Result<Loaded, Diagnostic> {
+    globals: &[String],
+) -> Result<(Loaded, Vec<Option<String>>), Diagnostic> {
     let mut ev = eval::Evaluator::new(
         files,
         options.include_paths.clone(),
@@ -190,12 +204,34 @@ fn evaluate(
         ev.declare_global(name, eval::value::Value::Float(*value));
     }
     ev.run(name, source)?;
+    let values = globals
+        .iter()
+        .map(|g| ev.global(g).map(print_value))
+        .collect();
     let scene = std::mem::take(&mut ev.scene);
-    Ok(Loaded {
+    let loaded = Loaded {
         scene,
         warnings: std::mem::take(&mut ev.warnings),
         debug: std::mem::take(&mut ev.debug_output),
-    })
+    };
+    Ok((loaded, values))
+}
+
+/// A value as tests write it: floats as Rust prints them, vectors `<1, 2, 3>`, colours
+/// `rgbft <r, g, b, f, t>`, strings in quotes; other kinds by their name (`a texture`).
+fn print_value(value: &eval::value::Value) -> String {
+    use eval::value::Value;
+    let list = |c: &[f64]| {
+        let parts: Vec<String> = c.iter().map(|x| x.to_string()).collect();
+        format!("<{}>", parts.join(", "))
+    };
+    match value {
+        Value::Float(x) => x.to_string(),
+        Value::Vector(v) => list(&v.c[..usize::from(v.len)]),
+        Value::Colour(c) => format!("rgbft {}", list(c)),
+        Value::Str(s) => format!("{:?}", &**s),
+        other => other.kind_name().to_string(),
+    }
 }
 
 /// What `penumbra check` prints for a scene that was read: counts of objects, lights,

@@ -103,6 +103,11 @@ impl<'w> Evaluator<'w> {
         self.scopes[0].insert(Rc::from(name), value);
     }
 
+    /// A global identifier's value after the scene was read; for tests that check values.
+    pub(crate) fn global(&self, name: &str) -> Option<&Value> {
+        self.scopes[0].get(name)
+    }
+
     /// Reads the whole scene from `name`/`source` and returns the finished scene.
     pub fn run(&mut self, name: &str, source: &str) -> Result<(), Diagnostic> {
         let result = self.run_inner(name, source);

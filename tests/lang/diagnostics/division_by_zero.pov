@@ -1,0 +1,2 @@
+sphere { 0, 1 / 0 }
+// error: 1:15 division by zero

@@ -1,0 +1,2 @@
+#macro R() R() #end R()
+// error: 1:12 macro calls are nested too deeply (more than 256 levels)
