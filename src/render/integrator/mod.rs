@@ -127,6 +127,20 @@ struct Branches {
     beyond: InteriorStack,
 }
 
+/// A ray the tree continues with, and the roulette that may end it.
+struct Branch {
+    dir: DVec3,
+    level: u32,
+    skip: u8,
+    interiors: InteriorStack,
+    /// The path's weight along this branch, before roulette.
+    weight: f64,
+    /// Whether the branch's light enters linearly (a reflection exponent does not), which
+    /// roulette needs to stay unbiased.
+    linear: bool,
+    roulette: Purpose,
+}
+
 /// Which branches to follow, each with the probability it was chosen with.
 struct Choice {
     reflect: Option<f64>,
@@ -328,25 +342,17 @@ impl<'a> Integrator<'a> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> Option<DVec3> {
-        let path = &s.path;
-        let weight = path.weight * b.reflect.max_element() / chosen;
         let e = finish.reflection.exponent;
-        let q = self.survival(weight, e == 1.0);
-        if q <= 0.0 || !self.survives(q, path.level, Purpose::RouletteReflection, sampler) {
-            return None;
-        }
-        let ray = Ray::new(
-            offset_point(s.surface.point, s.surface.normal, b.mirror),
-            b.mirror,
-        );
-        counts.secondary += 1;
-        let next = Path {
-            level: path.level + 1,
-            weight: weight / q,
+        let branch = Branch {
+            dir: b.mirror,
+            level: s.path.level + 1,
             skip: flags::NO_REFLECTION,
-            interiors: path.interiors,
+            interiors: s.path.interiors,
+            weight: s.path.weight * b.reflect.max_element() / chosen,
+            linear: e == 1.0,
+            roulette: Purpose::RouletteReflection,
         };
-        let incoming = self.trace(&ray, next, sampler, counts);
+        let (incoming, q) = self.follow(s, &branch, sampler, counts)?;
         let incoming = if e == 1.0 {
             incoming
         } else {
@@ -367,26 +373,49 @@ impl<'a> Integrator<'a> {
         counts: &mut RayCounts,
     ) -> Option<DVec3> {
         let path = &s.path;
-        let weight = path.weight * b.transmit.max_element() / chosen;
-        let q = self.survival(weight, true);
-        if q <= 0.0 || !self.survives(q, path.level, Purpose::RouletteTransmission, sampler) {
-            return None;
-        }
         let (dir, level, interiors, skip) = match b.refracted {
             Some(_) if b.straight => (s.d, path.level, b.beyond, path.skip),
             Some(dir) => (dir, path.level + 1, b.beyond, path.skip & !flags::NO_IMAGE),
             None => (b.mirror, path.level + 1, path.interiors, path.skip),
         };
-        let ray = Ray::new(offset_point(s.surface.point, s.surface.normal, dir), dir);
-        counts.secondary += 1;
-        let next = Path {
+        let branch = Branch {
+            dir,
             level,
-            weight: weight / q,
             skip,
             interiors,
+            weight: path.weight * b.transmit.max_element() / chosen,
+            linear: true,
+            roulette: Purpose::RouletteTransmission,
         };
-        let incoming = self.trace(&ray, next, sampler, counts);
+        let (incoming, q) = self.follow(s, &branch, sampler, counts)?;
         Some(b.transmit * incoming / (q * chosen))
+    }
+
+    /// Traces a branch from the hit after roulette: the light coming back along it and
+    /// the survival probability it must be divided by, or `None` where roulette ends it.
+    fn follow(
+        &self,
+        s: &Shading,
+        branch: &Branch,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> Option<(DVec3, f64)> {
+        let q = self.survival(branch.weight, branch.linear);
+        if q <= 0.0 || !self.survives(q, s.path.level, branch.roulette, sampler) {
+            return None;
+        }
+        let origin = offset_point(s.surface.point, s.surface.normal, branch.dir);
+        counts.secondary += 1;
+        let next = Path {
+            level: branch.level,
+            weight: branch.weight / q,
+            skip: branch.skip,
+            interiors: branch.interiors,
+        };
+        Some((
+            self.trace(&Ray::new(origin, branch.dir), next, sampler, counts),
+            q,
+        ))
     }
 
     /// What a ray that leaves the scene sees: the sky sphere's pigments, layered over the
