@@ -173,6 +173,33 @@ impl Evaluator<'_> {
         Ok(())
     }
 
+    /// `{ items }` after `keyword`, for blocks that are a list of items: one place for the
+    /// nesting guard, the stop at `}` and the error when it is missing. `item` reads one
+    /// item, starting at the token given, into `state`.
+    pub(super) fn block_items<T>(
+        &mut self,
+        keyword: &str,
+        what: &str,
+        mut state: T,
+        mut item: impl FnMut(&mut Self, &Token, &mut T) -> R<()>,
+    ) -> R<T> {
+        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
+        self.enter(open.span)?;
+        let r = (|| -> R<()> {
+            loop {
+                let tok = self.peek()?;
+                if tok.is_punct(Punct::RBrace) {
+                    return Ok(());
+                }
+                item(self, &tok, &mut state)?;
+            }
+        })();
+        self.leave();
+        r?;
+        self.expect(Punct::RBrace, &format!("to close {what}"))?;
+        Ok(state)
+    }
+
     /// The error for a token that does not belong in a block: unsupported feature, unknown
     /// name, or a missing `}`.
     pub(super) fn stray_in_block(&self, tok: &Token, what: &str) -> Diagnostic {

@@ -534,76 +534,58 @@ impl Evaluator<'_> {
     }
 
     fn transform_block_open(&mut self) -> R<Transform> {
-        let open = self.expect(Punct::LBrace, "after `transform`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Transform> {
-            let mut t = Transform::IDENTITY;
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(t);
-                }
+        self.block_items(
+            "transform",
+            "the transform",
+            Transform::IDENTITY,
+            |ev, tok, t| {
                 if tok.is_ident("inverse") {
-                    self.next()?;
-                    t = t.inverted();
-                    continue;
+                    ev.next()?;
+                    *t = t.inverted();
+                    return Ok(());
                 }
                 if let Some(Value::Transform(named)) =
-                    tok.ident().and_then(|n| self.lookup(n)).cloned()
+                    tok.ident().and_then(|n| ev.lookup(n)).cloned()
                 {
-                    self.next()?;
-                    t = t.then(&named);
-                    continue;
+                    ev.next()?;
+                    *t = t.then(&named);
+                    return Ok(());
                 }
-                match self.transform_modifier()? {
-                    Some(step) => t = t.then(&step),
-                    None => return Err(self.stray_in_block(&tok, "the transform")),
+                match ev.transform_modifier()? {
+                    Some(step) => *t = t.then(&step),
+                    None => return Err(ev.stray_in_block(tok, "the transform")),
                 }
-            }
-        })();
-        self.leave();
-        let t = r?;
-        self.expect(Punct::RBrace, "to close the transform")?;
-        Ok(t)
+                Ok(())
+            },
+        )
     }
 
-    pub(super) fn interior_body(&mut self, mut interior: Interior) -> R<Interior> {
-        let open = self.expect(Punct::LBrace, "after `interior`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Interior> {
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(interior);
+    pub(super) fn interior_body(&mut self, interior: Interior) -> R<Interior> {
+        self.block_items("interior", "the interior", interior, |ev, tok, interior| {
+            match tok.ident() {
+                Some("ior") => {
+                    ev.next()?;
+                    interior.ior = ev.float()?;
                 }
-                match tok.ident() {
-                    Some("ior") => {
-                        self.next()?;
-                        interior.ior = self.float()?;
+                Some(n) if matches!(ev.lookup(n), Some(Value::Interior(_))) => {
+                    if let Some(Value::Interior(i)) = ev.lookup(n).cloned() {
+                        *interior = i;
                     }
-                    Some(n) if matches!(self.lookup(n), Some(Value::Interior(_))) => {
-                        if let Some(Value::Interior(i)) = self.lookup(n).cloned() {
-                            interior = i;
-                        }
-                        self.next()?;
-                    }
-                    Some(w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour")) => {
-                        let w = w.to_string();
-                        self.next()?;
-                        self.interior_fade_item(&w, &mut interior)?;
-                    }
-                    Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
-                        let w = w.to_string();
-                        self.unsupported_or_skip(&tok, &w)?;
-                    }
-                    _ => return Err(self.stray_in_block(&tok, "the interior")),
+                    ev.next()?;
                 }
+                Some(w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour")) => {
+                    let w = w.to_string();
+                    ev.next()?;
+                    ev.interior_fade_item(&w, interior)?;
+                }
+                Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
+                    let w = w.to_string();
+                    ev.unsupported_or_skip(tok, &w)?;
+                }
+                _ => return Err(ev.stray_in_block(tok, "the interior")),
             }
-        })();
-        self.leave();
-        let i = r?;
-        self.expect(Punct::RBrace, "to close the interior")?;
-        Ok(i)
+            Ok(())
+        })
     }
 }
 
@@ -734,90 +716,67 @@ impl Evaluator<'_> {
     /// `{ objects }` after `clipped_by` or `bounded_by`; `{ other }` (the other keyword
     /// alone) means the objects given to the other one.
     fn object_list(&mut self, what: &str, other: &str, others: &[Object]) -> R<Vec<Object>> {
-        let open = self.expect(Punct::LBrace, &format!("after `{what}`"))?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<Object>> {
-            let mut out = Vec::new();
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(out);
-                }
-                if tok.is_ident(other) {
-                    self.next()?;
-                    out.extend(others.iter().cloned());
-                    continue;
-                }
-                match tok.ident() {
-                    Some(w) if is_object_keyword(w) => {
-                        let o = self.object()?;
-                        out.extend(o.object);
-                    }
-                    Some(w) if is_known_unsupported_shape(w) && self.lookup(w).is_none() => {
-                        let w = w.to_string();
-                        self.unsupported_or_skip(&tok, &w)?;
-                    }
-                    _ => return Err(self.stray_in_block(&tok, &format!("`{what}`"))),
-                }
+        let close = format!("`{what}`");
+        self.block_items(what, &close, Vec::new(), |ev, tok, out| {
+            if tok.is_ident(other) {
+                ev.next()?;
+                out.extend(others.iter().cloned());
+                return Ok(());
             }
-        })();
-        self.leave();
-        let out = r?;
-        self.expect(Punct::RBrace, &format!("to close `{what}`"))?;
-        Ok(out)
+            match tok.ident() {
+                Some(w) if is_object_keyword(w) => {
+                    let o = ev.object()?;
+                    out.extend(o.object);
+                }
+                Some(w) if is_known_unsupported_shape(w) && ev.lookup(w).is_none() => {
+                    let w = w.to_string();
+                    ev.unsupported_or_skip(tok, &w)?;
+                }
+                _ => return Err(ev.stray_in_block(tok, &close)),
+            }
+            Ok(())
+        })
     }
 
     /// `material { [Name] texture {...} interior {...} transforms }`.
     pub(super) fn material_body(&mut self, object: &mut Object) -> R<()> {
-        let open = self.expect(Punct::LBrace, "after `material`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<()> {
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(());
+        self.block_items("material", "the material", (), |ev, tok, ()| {
+            match tok.ident() {
+                Some("texture") => {
+                    ev.next()?;
+                    object.texture = Some(ev.texture_body(ev.default_texture.clone())?);
                 }
-                match tok.ident() {
-                    Some("texture") => {
-                        self.next()?;
-                        object.texture = Some(self.texture_body(self.default_texture.clone())?);
-                    }
-                    Some("interior") => {
-                        self.next()?;
-                        let base = object.interior.unwrap_or_default();
-                        object.interior = Some(self.interior_body(base)?);
-                    }
-                    Some(n)
-                        if matches!(self.lookup(n), Some(Value::Material(_) | Value::Array(_))) =>
-                    {
-                        // A material identifier, or an element of an array of them.
-                        let (v, s) = self.expr()?;
-                        let Value::Material(m) = v else {
-                            return Err(self
-                                .err(s, format!("expected a material, found {}", v.kind_name())));
-                        };
-                        if m.0.is_some() {
-                            object.texture = m.0;
-                        }
-                        if m.1.is_some() {
-                            object.interior = m.1;
-                        }
-                    }
-                    _ => match self.transform_modifier()? {
-                        Some(t) => {
-                            if let Some(texture) = &mut object.texture {
-                                texture.transform_by(&t);
-                            }
-                        }
-                        None => return Err(self.stray_in_block(&tok, "the material")),
-                    },
+                Some("interior") => {
+                    ev.next()?;
+                    let base = object.interior.unwrap_or_default();
+                    object.interior = Some(ev.interior_body(base)?);
                 }
+                Some(n) if matches!(ev.lookup(n), Some(Value::Material(_) | Value::Array(_))) => {
+                    // A material identifier, or an element of an array of them.
+                    let (v, s) = ev.expr()?;
+                    let Value::Material(m) = v else {
+                        return Err(
+                            ev.err(s, format!("expected a material, found {}", v.kind_name()))
+                        );
+                    };
+                    if m.0.is_some() {
+                        object.texture = m.0;
+                    }
+                    if m.1.is_some() {
+                        object.interior = m.1;
+                    }
+                }
+                _ => match ev.transform_modifier()? {
+                    Some(t) => {
+                        if let Some(texture) = &mut object.texture {
+                            texture.transform_by(&t);
+                        }
+                    }
+                    None => return Err(ev.stray_in_block(tok, "the material")),
+                },
             }
-        })();
-        self.leave();
-        r?;
-        self.expect(Punct::RBrace, "to close the material")?;
-        Ok(())
+            Ok(())
+        })
     }
 }
 

@@ -392,139 +392,142 @@ impl Evaluator<'_> {
 
     /// `warp { turbulence v octaves n omega w lambda l }`; other warps are unsupported.
     fn warp_block(&mut self) -> R<Option<Warp>> {
-        let open = self.expect(Punct::LBrace, "after `warp`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Option<Warp>> {
-            let mut t = Turbulence::default();
-            let mut any = false;
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(any.then_some(Warp::Turbulence(t)));
+        let start = (Turbulence::default(), false);
+        let (t, any) = self.block_items("warp", "the warp", start, |ev, tok, (t, any)| {
+            match tok.ident() {
+                Some("turbulence") => {
+                    ev.next()?;
+                    let (v, s) = ev.expr()?;
+                    t.amount = ev.to_vec3(&v, s)?;
+                    *any = true;
                 }
-                match tok.ident() {
-                    Some("turbulence") => {
-                        self.next()?;
-                        let (v, s) = self.expr()?;
-                        t.amount = self.to_vec3(&v, s)?;
-                        any = true;
-                    }
-                    Some("octaves") => {
-                        self.next()?;
-                        t.octaves = self.float()?.clamp(1.0, 10.0) as u32;
-                    }
-                    Some("omega") => {
-                        self.next()?;
-                        t.omega = self.float()?;
-                    }
-                    Some("lambda") => {
-                        self.next()?;
-                        t.lambda = self.float()?;
-                    }
-                    Some(w) => {
-                        let w = w.to_string();
-                        return Err(self.unsupported(&tok, &format!("warp {{ {w} }}")));
-                    }
-                    None => return Err(self.stray_in_block(&tok, "the warp")),
+                Some("octaves") => {
+                    ev.next()?;
+                    t.octaves = ev.float()?.clamp(1.0, 10.0) as u32;
                 }
+                Some("omega") => {
+                    ev.next()?;
+                    t.omega = ev.float()?;
+                }
+                Some("lambda") => {
+                    ev.next()?;
+                    t.lambda = ev.float()?;
+                }
+                Some(w) => {
+                    let w = w.to_string();
+                    return Err(ev.unsupported(tok, &format!("warp {{ {w} }}")));
+                }
+                None => return Err(ev.stray_in_block(tok, "the warp")),
             }
-        })();
-        self.leave();
-        let w = r?;
-        self.expect(Punct::RBrace, "to close the warp")?;
-        Ok(w)
+            Ok(())
+        })?;
+        Ok(any.then_some(Warp::Turbulence(t)))
     }
 
     /// `{ [v colour] ... }` after `color_map`; entries sorted by value as POV-Ray keeps them.
     fn colour_map_body(&mut self) -> R<Vec<(f64, Colour)>> {
-        let open = self.expect(Punct::LBrace, "after `color_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Colour)>> {
-            let mut map = Vec::new();
-            // `color_map { Declared }`: a map declared earlier (kept as a pigment).
-            if let Some(Value::Pigment(named)) =
-                self.peek()?.ident().and_then(|w| self.lookup(w)).cloned()
-                && let PigmentKind::ColourMap { map: m, .. } = named.kind
-            {
-                self.next()?;
-                map = m;
-            }
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
+        self.read_map_entries(
+            "color_map",
+            "colour map",
+            Self::declared_colour_map_entries,
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
                 // The old form `[a, b colour c colour d]`: a second value before the colours.
-                if self.starts_float()? {
-                    let v2 = self.float()?;
-                    let (c1, _) = self.colour()?;
-                    self.eat(Punct::Comma)?;
-                    let (c2, _) = self.colour()?;
+                if ev.starts_float()? {
+                    let v2 = ev.float()?;
+                    let (c1, _) = ev.colour()?;
+                    ev.eat(Punct::Comma)?;
+                    let (c2, _) = ev.colour()?;
                     map.push((v, colour_of(c1)));
                     map.push((v2, colour_of(c2)));
                 } else {
-                    let (c, _) = self.colour()?;
+                    let (c, _) = ev.colour()?;
                     map.push((v, colour_of(c)));
                 }
-                self.expect(Punct::RBracket, "to close the colour map entry")?;
+                Ok(())
+            },
+        )
+    }
+
+    /// `color_map { Declared }`: a map declared earlier (kept as a pigment) starts the map.
+    fn declared_colour_map_entries(&mut self) -> R<Vec<(f64, Colour)>> {
+        if let Some(Value::Pigment(named)) =
+            self.peek()?.ident().and_then(|w| self.lookup(w)).cloned()
+            && let PigmentKind::ColourMap { map, .. } = named.kind
+        {
+            self.next()?;
+            return Ok(map);
+        }
+        Ok(Vec::new())
+    }
+
+    /// `{ [entry] ... }` after a map keyword, the same for every kind of map: `entry` reads
+    /// what is inside one `[ ]` into the map, which `start` begins.
+    fn read_map_entries<T>(
+        &mut self,
+        keyword: &str,
+        what: &str,
+        start: fn(&mut Self) -> R<Vec<T>>,
+        mut entry: impl FnMut(&mut Self, &mut Vec<T>) -> R<()>,
+    ) -> R<Vec<T>> {
+        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<T>> {
+            let mut map = start(self)?;
+            while self.eat(Punct::LBracket)? {
+                entry(self, &mut map)?;
+                self.expect(Punct::RBracket, &format!("to close the {what} entry"))?;
             }
             Ok(map)
         })();
         self.leave();
         let map = r?;
-        self.expect(Punct::RBrace, "to close the colour map")?;
+        self.expect(Punct::RBrace, &format!("to close the {what}"))?;
         Ok(map)
     }
 
     /// `{ [v pigment {...}] ... }` after `pigment_map`.
     fn pigment_map_body(&mut self) -> R<Vec<(f64, Pigment)>> {
-        let open = self.expect(Punct::LBrace, "after `pigment_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Pigment)>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
+        self.read_map_entries(
+            "pigment_map",
+            "pigment map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
                 // Entries are pigment bodies: `[0.5 checker rgb 1, rgb 0]`, `[1 Named]`.
-                let p = if self.peek()?.is_ident("pigment") {
-                    self.list_entry()?.unwrap_or_default()
+                let p = if ev.peek()?.is_ident("pigment") {
+                    ev.list_entry()?.unwrap_or_default()
                 } else {
-                    self.pigment_items(Pigment::default(), Punct::RBracket)?
+                    ev.pigment_items(Pigment::default(), Punct::RBracket)?
                 };
                 map.push((v, p));
-                self.expect(Punct::RBracket, "to close the pigment map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the pigment map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// `{ [v texture {...}] ... }` after `texture_map`.
     fn texture_map_body(&mut self) -> R<Vec<(f64, Texture)>> {
-        let open = self.expect(Punct::LBrace, "after `texture_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Texture)>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
+        self.read_map_entries(
+            "texture_map",
+            "texture map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
                 // Entries are texture bodies: `[0.5 T_Named]`, `[1 pigment {...} finish {...}]`.
-                let t = if self.peek()?.is_ident("texture") {
-                    self.next()?;
-                    self.texture_body(self.default_texture.clone())?
+                let t = if ev.peek()?.is_ident("texture") {
+                    ev.next()?;
+                    ev.texture_body(ev.default_texture.clone())?
                 } else {
-                    self.texture_items(self.default_texture.clone(), Punct::RBracket)?
+                    ev.texture_items(ev.default_texture.clone(), Punct::RBracket)?
                 };
                 map.push((v, t));
-                self.expect(Punct::RBracket, "to close the texture map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the texture map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// `{ ... }` after `normal`.
@@ -619,54 +622,44 @@ impl Evaluator<'_> {
 
     /// `{ [v, <height, slope>] ... }` after `slope_map`, sorted as written.
     fn slope_map_body(&mut self) -> R<Vec<SlopeEntry>> {
-        let open = self.expect(Punct::LBrace, "after `slope_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<SlopeEntry>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let value = self.map_value()?;
-                self.eat(Punct::Comma)?;
-                let v = self.vector3()?;
+        self.read_map_entries(
+            "slope_map",
+            "slope map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let value = ev.map_value()?;
+                ev.eat(Punct::Comma)?;
+                let v = ev.vector3()?;
                 map.push(SlopeEntry {
                     value,
                     height: v.x,
                     slope: v.y,
                 });
-                self.expect(Punct::RBracket, "to close the slope map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the slope map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// `{ [v normal body] ... }` after `normal_map`: entries are bare normal bodies
     /// (`[0.5 bumps 0.3 scale 2]`); POV-Ray rejects a `normal {...}` wrapper there.
     fn normal_map_body(&mut self) -> R<Vec<(f64, Normal)>> {
-        let open = self.expect(Punct::LBrace, "after `normal_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Normal)>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
-                let n = self.normal_items(None, Punct::RBracket)?;
+        self.read_map_entries(
+            "normal_map",
+            "normal map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
+                let n = ev.normal_items(None, Punct::RBracket)?;
                 // An entry without a pattern leaves the normal as it is.
                 let n = n.unwrap_or_else(|| Normal {
                     amount: 0.0,
                     ..Normal::new(Pattern::new(PatternKind::Bozo))
                 });
                 map.push((v, n));
-                self.expect(Punct::RBracket, "to close the normal map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the normal map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// One entry of a pattern list: `pigment {...}` or a colour; `None` when neither follows.
