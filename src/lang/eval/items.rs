@@ -343,6 +343,34 @@ impl Evaluator<'_> {
 
     pub(super) fn light_source(&mut self) -> R<Light> {
         let open = self.block_start("light_source")?;
+        let mut d = LightDraft::new(self.light_start()?);
+        loop {
+            let tok = self.peek()?;
+            if tok.is_punct(Punct::RBrace) {
+                break;
+            }
+            let Some(word) = tok.ident() else {
+                return Err(self.stray_in_block(&tok, "the light_source"));
+            };
+            let word = word.to_string();
+            let known = self.area_light_item(&mut d.area, &word)?
+                || self.light_kind_item(&mut d, &word)?
+                || self.light_item(&mut d.light, &tok, &word)?;
+            if known {
+                continue;
+            }
+            let Some(t) = self.transform_modifier()? else {
+                return Err(self.stray_in_block(&tok, "the light_source"));
+            };
+            d.transform(&t);
+        }
+        let light = d.finish();
+        self.block_end(open, "the light_source")?;
+        Ok(light)
+    }
+
+    /// `Name` (a declared light) or `location, colour`: what a light block starts with.
+    fn light_start(&mut self) -> R<Light> {
         let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
         let first = self.peek()?;
         if let Some(Value::Object(o)) = first.ident().and_then(|w| self.lookup(w)).cloned() {
@@ -356,177 +384,134 @@ impl Evaluator<'_> {
             let (c, _) = self.colour()?;
             light.colour = DVec3::new(c[0], c[1], c[2]);
         }
-        let mut has_area = light.area.is_some();
-        let mut pending = light.area.unwrap_or(AreaLight {
-            axis1: DVec3::ZERO,
-            axis2: DVec3::ZERO,
-            size1: 1,
-            size2: 1,
-            adaptive: None,
-            jitter: false,
-            circular: false,
-            orient: false,
-        });
-        let mut spot = matches!(light.kind, LightKind::Spot { .. });
-        let mut parallel = matches!(light.kind, LightKind::Parallel { .. });
-        let mut cylinder = matches!(light.kind, LightKind::Cylinder { .. });
-        let (mut point_at, mut radius, mut falloff, mut tightness) = match light.kind {
-            LightKind::Point => (DVec3::Z, 30.0, 45.0, 0.0),
-            LightKind::Spot {
-                point_at,
-                radius,
-                falloff,
-                tightness,
-            } => (point_at, radius, falloff, tightness),
-            LightKind::Parallel { point_at } => (point_at, 30.0, 45.0, 0.0),
-            LightKind::Cylinder {
-                point_at,
-                radius,
-                falloff,
-                tightness,
-            } => (point_at, radius, falloff, tightness),
-        };
-        loop {
-            let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
-            }
-            let Some(word) = tok.ident() else {
-                return Err(self.stray_in_block(&tok, "the light_source"));
-            };
-            let word = word.to_string();
-            match word.as_str() {
-                "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
-                    let (c, _) = self.colour()?;
-                    light.colour = DVec3::new(c[0], c[1], c[2]);
-                }
-                "area_light" => {
-                    self.next()?;
-                    let axis1 = self.vector3()?;
-                    self.eat(Punct::Comma)?;
-                    let axis2 = self.vector3()?;
-                    self.eat(Punct::Comma)?;
-                    let size1 = self.count()?;
-                    self.eat(Punct::Comma)?;
-                    let size2 = self.count()?;
-                    pending.axis1 = axis1;
-                    pending.axis2 = axis2;
-                    pending.size1 = size1;
-                    pending.size2 = size2;
-                    has_area = true;
-                }
-                "adaptive" => {
-                    self.next()?;
-                    let k = self.float()?;
-                    pending.adaptive = Some(k.max(0.0) as u32);
-                }
-                // Without an `area_light` these do nothing, as in POV-Ray; they are kept
-                // in case the `area_light` comes later in the block.
-                "jitter" => {
-                    self.next()?;
-                    pending.jitter = true;
-                }
-                "circular" => {
-                    self.next()?;
-                    pending.circular = true;
-                }
-                "orient" => {
-                    self.next()?;
-                    pending.orient = true;
-                }
-                "shadowless" => {
-                    self.next()?;
-                    light.shadowless = true;
-                }
-                "area_illumination" => {
-                    self.next()?;
-                    light.area_illumination = self.optional_bool()?;
-                }
-                "media_interaction" | "media_attenuation" => {
-                    // Only matters with media, which penumbra does not have.
-                    self.next()?;
-                    self.optional_bool()?;
-                }
-                "fade_distance" => {
-                    self.next()?;
-                    light.fade_distance = self.float()?;
-                }
-                "fade_power" => {
-                    self.next()?;
-                    light.fade_power = self.float()?;
-                }
-                "spotlight" => {
-                    self.next()?;
-                    spot = true;
-                }
-                "parallel" => {
-                    self.next()?;
-                    parallel = true;
-                }
-                "point_at" => {
-                    self.next()?;
-                    point_at = self.vector3()?;
-                }
-                "radius" => {
-                    self.next()?;
-                    radius = self.float()?;
-                }
-                "falloff" => {
-                    self.next()?;
-                    falloff = self.float()?;
-                }
-                "tightness" => {
-                    self.next()?;
-                    tightness = self.float()?;
-                }
-                "cylinder" => {
-                    self.next()?;
-                    cylinder = true;
-                }
-                "looks_like" => {
-                    let open = self.block_start("looks_like")?;
-                    let value = self.object()?;
-                    self.block_end(open, "looks_like")?;
-                    if let Some(mut object) = value.object {
-                        // The object is modelled at the origin and travels with the light;
-                        // it must not shadow the light it surrounds.
-                        object.transform_by(&crate::scene::Transform::translate(light.location));
-                        object.flags.no_shadow = true;
-                        light.looks_like = Some(Box::new(object));
-                    }
-                }
-                "projected_through" | "photons" => {
-                    self.unsupported_or_skip(&tok, &word)?;
-                }
-                _ => {
-                    if let Some(t) = self.transform_modifier()? {
-                        // Keep the spotlight target in the light's kind while transforming.
-                        light.kind = kind_of(
-                            spot, parallel, cylinder, point_at, radius, falloff, tightness,
-                        );
-                        light.area = has_area.then_some(pending);
-                        transform_light(&mut light, &t);
-                        if let Some(a) = light.area {
-                            pending = a;
-                        }
-                        point_at = match light.kind {
-                            LightKind::Spot { point_at, .. }
-                            | LightKind::Cylinder { point_at, .. }
-                            | LightKind::Parallel { point_at } => point_at,
-                            LightKind::Point => t.point(point_at),
-                        };
-                        continue;
-                    }
-                    return Err(self.stray_in_block(&tok, "the light_source"));
-                }
-            }
-        }
-        light.kind = kind_of(
-            spot, parallel, cylinder, point_at, radius, falloff, tightness,
-        );
-        light.area = has_area.then_some(pending);
-        self.block_end(open, "the light_source")?;
         Ok(light)
+    }
+
+    /// `area_light` and the items that shape it; false for other words.
+    fn area_light_item(&mut self, area: &mut (bool, AreaLight), word: &str) -> R<bool> {
+        let (has_area, pending) = area;
+        match word {
+            "area_light" => {
+                self.next()?;
+                let axis1 = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let axis2 = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let size1 = self.count()?;
+                self.eat(Punct::Comma)?;
+                let size2 = self.count()?;
+                pending.axis1 = axis1;
+                pending.axis2 = axis2;
+                pending.size1 = size1;
+                pending.size2 = size2;
+                *has_area = true;
+            }
+            "adaptive" => {
+                self.next()?;
+                let k = self.float()?;
+                pending.adaptive = Some(k.max(0.0) as u32);
+            }
+            // Without an `area_light` these do nothing, as in POV-Ray; they are kept
+            // in case the `area_light` comes later in the block.
+            "jitter" => {
+                self.next()?;
+                pending.jitter = true;
+            }
+            "circular" => {
+                self.next()?;
+                pending.circular = true;
+            }
+            "orient" => {
+                self.next()?;
+                pending.orient = true;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// `spotlight`, `parallel`, `cylinder` and their cone; false for other words.
+    fn light_kind_item(&mut self, d: &mut LightDraft, word: &str) -> R<bool> {
+        match word {
+            "spotlight" => {
+                self.next()?;
+                d.spot = true;
+            }
+            "parallel" => {
+                self.next()?;
+                d.parallel = true;
+            }
+            "cylinder" => {
+                self.next()?;
+                d.cylinder = true;
+            }
+            "point_at" => {
+                self.next()?;
+                d.point_at = self.vector3()?;
+            }
+            "radius" => {
+                self.next()?;
+                d.radius = self.float()?;
+            }
+            "falloff" => {
+                self.next()?;
+                d.falloff = self.float()?;
+            }
+            "tightness" => {
+                self.next()?;
+                d.tightness = self.float()?;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// Colour, fading, shadows and `looks_like`; false for other words.
+    fn light_item(&mut self, light: &mut Light, tok: &Token, word: &str) -> R<bool> {
+        match word {
+            "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
+                let (c, _) = self.colour()?;
+                light.colour = DVec3::new(c[0], c[1], c[2]);
+            }
+            "shadowless" => {
+                self.next()?;
+                light.shadowless = true;
+            }
+            "area_illumination" => {
+                self.next()?;
+                light.area_illumination = self.optional_bool()?;
+            }
+            "media_interaction" | "media_attenuation" => {
+                // Only matters with media, which penumbra does not have.
+                self.next()?;
+                self.optional_bool()?;
+            }
+            "fade_distance" => {
+                self.next()?;
+                light.fade_distance = self.float()?;
+            }
+            "fade_power" => {
+                self.next()?;
+                light.fade_power = self.float()?;
+            }
+            "looks_like" => {
+                let open = self.block_start("looks_like")?;
+                let value = self.object()?;
+                self.block_end(open, "looks_like")?;
+                if let Some(mut object) = value.object {
+                    // The object is modelled at the origin and travels with the light;
+                    // it must not shadow the light it surrounds.
+                    object.transform_by(&crate::scene::Transform::translate(light.location));
+                    object.flags.no_shadow = true;
+                    light.looks_like = Some(Box::new(object));
+                }
+            }
+            "projected_through" | "photons" => {
+                self.unsupported_or_skip(tok, word)?;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
     }
 
     /// A positive whole number (grid sizes).
@@ -615,6 +600,99 @@ impl Evaluator<'_> {
             }
         }
         self.block_end(open, "global_settings")
+    }
+}
+
+/// A light while its block is read: the kind and the area light are only settled at the
+/// end, since `spotlight`, `radius` or `area_light` may come in any order.
+struct LightDraft {
+    light: Light,
+    /// Whether there is an area light, and its settings so far.
+    area: (bool, AreaLight),
+    spot: bool,
+    parallel: bool,
+    cylinder: bool,
+    point_at: DVec3,
+    radius: f64,
+    falloff: f64,
+    tightness: f64,
+}
+
+impl LightDraft {
+    fn new(light: Light) -> LightDraft {
+        let has_area = light.area.is_some();
+        let pending = light.area.unwrap_or(AreaLight {
+            axis1: DVec3::ZERO,
+            axis2: DVec3::ZERO,
+            size1: 1,
+            size2: 1,
+            adaptive: None,
+            jitter: false,
+            circular: false,
+            orient: false,
+        });
+        let (point_at, radius, falloff, tightness) = match light.kind {
+            LightKind::Point => (DVec3::Z, 30.0, 45.0, 0.0),
+            LightKind::Spot {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            }
+            | LightKind::Cylinder {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            } => (point_at, radius, falloff, tightness),
+            LightKind::Parallel { point_at } => (point_at, 30.0, 45.0, 0.0),
+        };
+        LightDraft {
+            spot: matches!(light.kind, LightKind::Spot { .. }),
+            parallel: matches!(light.kind, LightKind::Parallel { .. }),
+            cylinder: matches!(light.kind, LightKind::Cylinder { .. }),
+            light,
+            area: (has_area, pending),
+            point_at,
+            radius,
+            falloff,
+            tightness,
+        }
+    }
+
+    /// Writes the kind and area light read so far into the light.
+    fn settle(&mut self) {
+        self.light.kind = kind_of(
+            self.spot,
+            self.parallel,
+            self.cylinder,
+            self.point_at,
+            self.radius,
+            self.falloff,
+            self.tightness,
+        );
+        let (has_area, pending) = self.area;
+        self.light.area = has_area.then_some(pending);
+    }
+
+    /// Transforms the light, keeping the spotlight target in its kind while doing so.
+    fn transform(&mut self, t: &crate::scene::Transform) {
+        self.settle();
+        transform_light(&mut self.light, t);
+        if let Some(a) = self.light.area {
+            self.area.1 = a;
+        }
+        self.point_at = match self.light.kind {
+            LightKind::Spot { point_at, .. }
+            | LightKind::Cylinder { point_at, .. }
+            | LightKind::Parallel { point_at } => point_at,
+            LightKind::Point => t.point(self.point_at),
+        };
+    }
+
+    fn finish(mut self) -> Light {
+        self.settle();
+        self.light
     }
 }
 
