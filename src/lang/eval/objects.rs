@@ -14,7 +14,7 @@ type R<T> = Result<T, Diagnostic>;
 
 /// What reading a shape's own items (before its modifiers) gave.
 enum ShapeRead {
-    Kept(ObjectValue),
+    Kept(Box<ObjectValue>),
     /// POV-Ray drops the shape with a warning; its modifiers are still read.
     Dropped,
     /// `--skip-unsupported` left the whole object out, closing brace and all.
@@ -25,7 +25,7 @@ enum ShapeRead {
 type ShapeReader = fn(&mut Evaluator<'_>, &Token) -> R<ShapeRead>;
 
 fn kept(o: ObjectValue) -> R<ShapeRead> {
-    Ok(ShapeRead::Kept(o))
+    Ok(ShapeRead::Kept(Box::new(o)))
 }
 
 /// Every keyword that starts an object, with its reader: the one list both "is this an
@@ -106,7 +106,7 @@ impl Evaluator<'_> {
             None => self.object_reference()?,
         };
         let (mut o, dropped) = match read {
-            ShapeRead::Kept(o) => (o, false),
+            ShapeRead::Kept(o) => (*o, false),
             ShapeRead::Dropped => (shape(Shape::Union(Vec::new())), true),
             ShapeRead::Skipped => {
                 self.leave();
@@ -296,11 +296,11 @@ impl Evaluator<'_> {
         match tok.ident().and_then(|n| self.lookup(n)).cloned() {
             Some(Value::Object(o)) => {
                 self.next()?;
-                kept(*o)
+                Ok(ShapeRead::Kept(o))
             }
             // `object { Shapes[i] }`
             Some(Value::Array(_)) => match self.expr()? {
-                (Value::Object(o), _) => kept(*o),
+                (Value::Object(o), _) => Ok(ShapeRead::Kept(o)),
                 (Value::Unsupported(d), s) => Err(self.err(s, d.message.clone())),
                 (other, s) => Err(self.err(
                     s,

@@ -69,6 +69,110 @@ const PATTERNS: &[&str] = &[
 ];
 
 /// What a pattern block holds while it is read: the pattern and where its modifiers go.
+/// `albedo` forms of `diffuse`, `phong` and `specular`: they depend on `brilliance`,
+/// `phong_size` and `roughness`, which may come later in the block, so they are resolved
+/// at its end.
+#[derive(Default)]
+struct Albedos {
+    diffuse: Option<f64>,
+    phong: Option<f64>,
+    specular: Option<f64>,
+}
+
+impl Albedos {
+    fn resolve(&self, f: &mut Finish) {
+        if let Some(k) = self.diffuse {
+            f.diffuse = k * (f.brilliance + 1.0) / 2.0;
+        }
+        if let Some(p) = self.phong {
+            f.phong = p * (f.phong_size + 1.0) / 2.0;
+        }
+        if let Some(s) = self.specular {
+            let e = 1.0 / f.roughness;
+            f.specular = s * (e + 2.0) / (4.0 * (2.0 - 2f64.powf(-e / 2.0)));
+        }
+    }
+}
+
+/// Reads one pattern item (after its keyword) into the pattern.
+type PatternItem = fn(&mut Evaluator<'_>, &mut Pattern) -> R<()>;
+
+fn turbulence(p: &mut Pattern) -> &mut Turbulence {
+    p.turbulence.get_or_insert_with(Turbulence::default)
+}
+
+fn set_wave(p: &mut Pattern, wave: Wave) -> R<()> {
+    p.wave = wave;
+    Ok(())
+}
+
+/// The items every pattern takes (`warp` aside, which also moves the pattern's transform).
+const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
+    ("frequency", |ev, p| {
+        p.frequency = ev.float()?;
+        Ok(())
+    }),
+    ("phase", |ev, p| {
+        p.phase = ev.float()?;
+        Ok(())
+    }),
+    ("ramp_wave", |_, p| set_wave(p, Wave::Ramp)),
+    ("sine_wave", |_, p| set_wave(p, Wave::Sine)),
+    ("triangle_wave", |_, p| set_wave(p, Wave::Triangle)),
+    ("scallop_wave", |_, p| set_wave(p, Wave::Scallop)),
+    ("cubic_wave", |_, p| set_wave(p, Wave::Cubic)),
+    ("poly_wave", |ev, p| {
+        let e = if ev.starts_float()? { ev.float()? } else { 1.0 };
+        set_wave(p, Wave::Poly(e))
+    }),
+    ("turbulence", |ev, p| {
+        let (v, s) = ev.expr()?;
+        let amount = ev.to_vec3(&v, s)?;
+        turbulence(p).amount = amount;
+        Ok(())
+    }),
+    ("octaves", |ev, p| {
+        let o = ev.float()?;
+        turbulence(p).octaves = o.clamp(1.0, 10.0) as u32;
+        Ok(())
+    }),
+    ("omega", |ev, p| {
+        let o = ev.float()?;
+        turbulence(p).omega = o;
+        Ok(())
+    }),
+    ("lambda", |ev, p| {
+        let l = ev.float()?;
+        turbulence(p).lambda = l;
+        Ok(())
+    }),
+    ("noise_generator", |ev, p| {
+        p.noise_generator = ev.float()?.clamp(1.0, 3.0) as u8;
+        Ok(())
+    }),
+    ("brick_size", |ev, p| {
+        let v = ev.vector3()?;
+        if let PatternKind::Brick { size, .. } = &mut p.kind {
+            *size = v;
+        }
+        Ok(())
+    }),
+    ("mortar", |ev, p| {
+        let m = ev.float()?;
+        if let PatternKind::Brick { mortar, .. } = &mut p.kind {
+            *mortar = m;
+        }
+        Ok(())
+    }),
+    ("agate_turb", |ev, p| {
+        let a = ev.float()?;
+        if let PatternKind::Agate { turbulence } = &mut p.kind {
+            *turbulence = a;
+        }
+        Ok(())
+    }),
+];
+
 enum Modified<'a> {
     Pigment(&'a mut Pigment),
     Normal(&'a mut Normal),
@@ -269,26 +373,8 @@ impl Evaluator<'_> {
     /// A pattern modifier (frequency, wave, turbulence, warp, brick size ...) applied to
     /// the pattern being read; false when the word is none.
     fn pattern_modifier(&mut self, target: Modified<'_>, word: &str) -> R<bool> {
-        const WORDS: &[&str] = &[
-            "frequency",
-            "phase",
-            "ramp_wave",
-            "sine_wave",
-            "triangle_wave",
-            "scallop_wave",
-            "cubic_wave",
-            "poly_wave",
-            "turbulence",
-            "octaves",
-            "omega",
-            "lambda",
-            "warp",
-            "noise_generator",
-            "brick_size",
-            "mortar",
-            "agate_turb",
-        ];
-        if !WORDS.contains(&word) {
+        let item = PATTERN_ITEMS.iter().find(|(name, _)| *name == word);
+        if item.is_none() && word != "warp" {
             return Ok(false);
         }
         let tok = self.next()?;
@@ -310,82 +396,20 @@ impl Evaluator<'_> {
                 }
             },
         };
+        // Without a pattern (a plain colour) the item is read and has no effect.
         let mut scratch = Pattern::new(PatternKind::Bozo);
         let pattern = pattern.unwrap_or(&mut scratch);
-        match word {
-            "frequency" => pattern.frequency = self.float()?,
-            "phase" => pattern.phase = self.float()?,
-            "ramp_wave" => pattern.wave = Wave::Ramp,
-            "sine_wave" => pattern.wave = Wave::Sine,
-            "triangle_wave" => pattern.wave = Wave::Triangle,
-            "scallop_wave" => pattern.wave = Wave::Scallop,
-            "cubic_wave" => pattern.wave = Wave::Cubic,
-            "poly_wave" => {
-                let e = if self.starts_float()? {
-                    self.float()?
-                } else {
-                    1.0
-                };
-                pattern.wave = Wave::Poly(e);
+        if let Some((_, read)) = item {
+            return read(self, pattern).map(|()| true);
+        }
+        // warp { turbulence ... }: transforms written before it are warped with the
+        // pattern, so they move into the warp chain.
+        if let Some(w) = self.warp_block()? {
+            if !transform.is_identity() {
+                pattern.warps.push(Warp::Transform(*transform));
+                *transform = Transform::IDENTITY;
             }
-            "turbulence" => {
-                let (v, s) = self.expr()?;
-                let amount = self.to_vec3(&v, s)?;
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .amount = amount;
-            }
-            "octaves" => {
-                let o = self.float()?;
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .octaves = o.clamp(1.0, 10.0) as u32;
-            }
-            "omega" => {
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .omega = self.float()?
-            }
-            "lambda" => {
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .lambda = self.float()?
-            }
-            "noise_generator" => pattern.noise_generator = self.float()?.clamp(1.0, 3.0) as u8,
-            "brick_size" => {
-                let v = self.vector3()?;
-                if let PatternKind::Brick { size, .. } = &mut pattern.kind {
-                    *size = v;
-                }
-            }
-            "mortar" => {
-                let m = self.float()?;
-                if let PatternKind::Brick { mortar, .. } = &mut pattern.kind {
-                    *mortar = m;
-                }
-            }
-            "agate_turb" => {
-                let a = self.float()?;
-                if let PatternKind::Agate { turbulence } = &mut pattern.kind {
-                    *turbulence = a;
-                }
-            }
-            _ => {
-                // warp { turbulence ... }: transforms written before it are warped with
-                // the pattern, so they move into the warp chain.
-                let warp = self.warp_block()?;
-                if let Some(w) = warp {
-                    if !transform.is_identity() {
-                        pattern.warps.push(Warp::Transform(*transform));
-                        *transform = Transform::IDENTITY;
-                    }
-                    pattern.warps.push(w);
-                }
-            }
+            pattern.warps.push(w);
         }
         Ok(true)
     }
@@ -708,11 +732,7 @@ impl Evaluator<'_> {
     }
 
     fn finish_items(&mut self, mut f: Finish) -> R<Finish> {
-        // `albedo` forms depend on brilliance, phong_size and roughness, which may come
-        // later in the block, so they are resolved at the end.
-        let mut diffuse_albedo = None;
-        let mut phong_albedo = None;
-        let mut specular_albedo = None;
+        let mut albedo = Albedos::default();
         loop {
             let tok = self.peek()?;
             if tok.is_punct(Punct::RBrace) {
@@ -731,48 +751,16 @@ impl Evaluator<'_> {
                 "ambient" => f.ambient = self.colour_or_float()?,
                 "emission" => f.emission = self.colour_or_float()?,
                 "diffuse" => {
-                    let albedo = self.eat_ident("albedo")?;
-                    let d = self.float()?;
-                    if albedo {
-                        diffuse_albedo = Some(d);
-                    } else {
-                        diffuse_albedo = None;
-                        f.diffuse = d;
-                    }
+                    self.albedo_or_value(&mut f.diffuse, &mut albedo.diffuse)?;
                     if self.eat(Punct::Comma)? {
                         f.diffuse_back = self.float()?;
                     }
                 }
                 "brilliance" => f.brilliance = self.float()?,
-                "phong" => {
-                    let albedo = self.eat_ident("albedo")?;
-                    let v = self.float()?;
-                    if albedo {
-                        phong_albedo = Some(v);
-                    } else {
-                        phong_albedo = None;
-                        f.phong = v;
-                    }
-                }
+                "phong" => self.albedo_or_value(&mut f.phong, &mut albedo.phong)?,
                 "phong_size" => f.phong_size = self.float()?,
-                "specular" => {
-                    let albedo = self.eat_ident("albedo")?;
-                    let v = self.float()?;
-                    if albedo {
-                        specular_albedo = Some(v);
-                    } else {
-                        specular_albedo = None;
-                        f.specular = v;
-                    }
-                }
-                "roughness" => {
-                    let (v, s) = self.expr()?;
-                    let r = self.to_float(&v, s)?;
-                    if r <= 0.0 {
-                        return Err(self.err(s, "roughness must be greater than zero"));
-                    }
-                    f.roughness = r;
-                }
+                "specular" => self.albedo_or_value(&mut f.specular, &mut albedo.specular)?,
+                "roughness" => f.roughness = self.positive_float("roughness")?,
                 "metallic" => {
                     f.metallic = if self.starts_float()? {
                         self.float()?
@@ -790,12 +778,7 @@ impl Evaluator<'_> {
                     }
                 }
                 "reflection_exponent" => {
-                    let (v, s) = self.expr()?;
-                    let e = self.to_float(&v, s)?;
-                    if e <= 0.0 {
-                        return Err(self.err(s, "reflection_exponent must be greater than zero"));
-                    }
-                    f.reflection.exponent = e;
+                    f.reflection.exponent = self.positive_float("reflection_exponent")?;
                 }
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => f.crand = self.float()?,
@@ -807,17 +790,32 @@ impl Evaluator<'_> {
                 _ => return Err(self.stray_in_block(&tok, "the finish")),
             }
         }
-        if let Some(k) = diffuse_albedo {
-            f.diffuse = k * (f.brilliance + 1.0) / 2.0;
-        }
-        if let Some(p) = phong_albedo {
-            f.phong = p * (f.phong_size + 1.0) / 2.0;
-        }
-        if let Some(s) = specular_albedo {
-            let e = 1.0 / f.roughness;
-            f.specular = s * (e + 2.0) / (4.0 * (2.0 - 2f64.powf(-e / 2.0)));
-        }
+        albedo.resolve(&mut f);
         Ok(f)
+    }
+
+    /// `phong [albedo] v` (and `diffuse`, `specular`): a plain value is set now; an albedo
+    /// is kept for the end of the block, and the last of the two written wins.
+    fn albedo_or_value(&mut self, value: &mut f64, albedo: &mut Option<f64>) -> R<()> {
+        let is_albedo = self.eat_ident("albedo")?;
+        let v = self.float()?;
+        if is_albedo {
+            *albedo = Some(v);
+        } else {
+            *albedo = None;
+            *value = v;
+        }
+        Ok(())
+    }
+
+    /// A float that must be greater than zero (it is divided by or raised to).
+    fn positive_float(&mut self, what: &str) -> R<f64> {
+        let (v, s) = self.expr()?;
+        let x = self.to_float(&v, s)?;
+        if x <= 0.0 {
+            return Err(self.err(s, format!("{what} must be greater than zero")));
+        }
+        Ok(x)
     }
 
     /// A float (all of r, g, b) or a colour (its r, g, b).
