@@ -217,128 +217,122 @@ impl Evaluator<'_> {
     }
 
     fn sky_sphere(&mut self) -> R<crate::scene::SkySphere> {
-        let open = self.block_start("sky_sphere")?;
-        let mut sky = crate::scene::SkySphere {
+        let sky = crate::scene::SkySphere {
             pigments: Vec::new(),
             emission: DVec3::ONE,
         };
-        loop {
-            let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
-            }
+        self.next()?;
+        self.block_items("sky_sphere", "the sky_sphere", sky, |ev, tok, sky| {
             match tok.ident() {
                 Some("pigment") => {
-                    self.next()?;
-                    let p = self.pigment_body(crate::scene::Pigment::default())?;
+                    ev.next()?;
+                    let p = ev.pigment_body(crate::scene::Pigment::default())?;
                     sky.pigments.push(p);
                 }
                 Some("emission") => {
-                    self.next()?;
-                    let (c, _) = self.colour()?;
+                    ev.next()?;
+                    let (c, _) = ev.colour()?;
                     sky.emission = DVec3::new(c[0], c[1], c[2]);
                 }
-                Some(word) if matches!(self.lookup(word), Some(Value::SkySphere(_))) => {
-                    if let Some(Value::SkySphere(named)) = self.lookup(word).cloned() {
-                        sky = *named;
+                Some(word) if matches!(ev.lookup(word), Some(Value::SkySphere(_))) => {
+                    if let Some(Value::SkySphere(named)) = ev.lookup(word).cloned() {
+                        *sky = *named;
                     }
-                    self.next()?;
+                    ev.next()?;
                 }
                 _ => {
-                    if let Some(t) = self.transform_modifier()? {
+                    if let Some(t) = ev.transform_modifier()? {
                         for p in &mut sky.pigments {
                             p.transform_by(&t);
                         }
-                        continue;
+                        return Ok(());
                     }
-                    return Err(self.stray_in_block(&tok, "the sky_sphere"));
+                    return Err(ev.stray_in_block(tok, "the sky_sphere"));
                 }
             }
-        }
-        self.block_end(open, "the sky_sphere")?;
-        Ok(sky)
+            Ok(())
+        })
     }
 
     fn camera_block(&mut self) -> R<CameraSpec> {
-        let open = self.block_start("camera")?;
-        let mut spec = CameraSpec::default();
-        loop {
-            let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
-            }
-            let Some(word) = tok.ident() else {
-                return Err(self.stray_in_block(&tok, "the camera"));
-            };
-            match word {
-                "perspective" => {
-                    self.next()?;
-                    spec.orthographic = false;
-                }
-                "orthographic" => {
-                    self.next()?;
-                    spec.orthographic = true;
-                }
-                "location" | "look_at" | "right" | "up" | "direction" | "sky" => {
-                    let word = word.to_string();
-                    self.next()?;
-                    let v = self.vector3()?;
-                    match word.as_str() {
-                        "location" => spec.location = v,
-                        "look_at" => spec.look_at = Some(v),
-                        "right" => spec.right = v,
-                        "up" => spec.up = v,
-                        "direction" => spec.direction = v,
-                        _ => spec.sky = v,
+        self.next()?;
+        self.block_items(
+            "camera",
+            "the camera",
+            CameraSpec::default(),
+            |ev, tok, spec| {
+                let Some(word) = tok.ident() else {
+                    return Err(ev.stray_in_block(tok, "the camera"));
+                };
+                match word {
+                    "perspective" => {
+                        ev.next()?;
+                        spec.orthographic = false;
+                    }
+                    "orthographic" => {
+                        ev.next()?;
+                        spec.orthographic = true;
+                    }
+                    "location" | "look_at" | "right" | "up" | "direction" | "sky" => {
+                        let word = word.to_string();
+                        ev.next()?;
+                        let v = ev.vector3()?;
+                        match word.as_str() {
+                            "location" => spec.location = v,
+                            "look_at" => spec.look_at = Some(v),
+                            "right" => spec.right = v,
+                            "up" => spec.up = v,
+                            "direction" => spec.direction = v,
+                            _ => spec.sky = v,
+                        }
+                    }
+                    "angle" => {
+                        ev.next()?;
+                        spec.angle = Some(ev.float()?);
+                    }
+                    "aperture" => {
+                        ev.next()?;
+                        spec.aperture = ev.float()?.max(0.0);
+                    }
+                    "focal_point" => {
+                        ev.next()?;
+                        spec.focal_point = ev.vector3()?;
+                    }
+                    "blur_samples" => {
+                        ev.next()?;
+                        spec.blur_samples = ev.float()?.max(0.0) as u32;
+                        // POV-Ray 3.7 also takes `blur_samples min, max`.
+                        if ev.eat(Punct::Comma)? {
+                            spec.blur_samples = ev.float()?.max(0.0) as u32;
+                        }
+                    }
+                    "confidence" | "variance" => {
+                        // Settings of POV-Ray's adaptive blur sampling; penumbra samples the lens
+                        // over a pixel's samples instead.
+                        ev.next()?;
+                        ev.float()?;
+                    }
+                    "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
+                    | "cylinder" | "mesh_camera" | "normal" => {
+                        let word = word.to_string();
+                        ev.unsupported_or_skip(tok, &word)?;
+                    }
+                    _ => {
+                        if let Some(Value::Camera(c)) = ev.lookup(word).cloned() {
+                            ev.next()?;
+                            *spec = *c;
+                            return Ok(());
+                        }
+                        if let Some(t) = ev.transform_modifier()? {
+                            spec.transform = spec.transform.then(&t);
+                            return Ok(());
+                        }
+                        return Err(ev.stray_in_block(tok, "the camera"));
                     }
                 }
-                "angle" => {
-                    self.next()?;
-                    spec.angle = Some(self.float()?);
-                }
-                "aperture" => {
-                    self.next()?;
-                    spec.aperture = self.float()?.max(0.0);
-                }
-                "focal_point" => {
-                    self.next()?;
-                    spec.focal_point = self.vector3()?;
-                }
-                "blur_samples" => {
-                    self.next()?;
-                    spec.blur_samples = self.float()?.max(0.0) as u32;
-                    // POV-Ray 3.7 also takes `blur_samples min, max`.
-                    if self.eat(Punct::Comma)? {
-                        spec.blur_samples = self.float()?.max(0.0) as u32;
-                    }
-                }
-                "confidence" | "variance" => {
-                    // Settings of POV-Ray's adaptive blur sampling; penumbra samples the lens
-                    // over a pixel's samples instead.
-                    self.next()?;
-                    self.float()?;
-                }
-                "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
-                | "cylinder" | "mesh_camera" | "normal" => {
-                    let word = word.to_string();
-                    self.unsupported_or_skip(&tok, &word)?;
-                }
-                _ => {
-                    if let Some(Value::Camera(c)) = self.lookup(word).cloned() {
-                        self.next()?;
-                        spec = *c;
-                        continue;
-                    }
-                    if let Some(t) = self.transform_modifier()? {
-                        spec.transform = spec.transform.then(&t);
-                        continue;
-                    }
-                    return Err(self.stray_in_block(&tok, "the camera"));
-                }
-            }
-        }
-        self.block_end(open, "the camera")?;
-        Ok(spec)
+                Ok(())
+            },
+        )
     }
 
     pub(super) fn light_source(&mut self) -> R<Light> {
@@ -551,55 +545,51 @@ impl Evaluator<'_> {
     }
 
     fn global_settings(&mut self) -> R<()> {
-        let open = self.block_start("global_settings")?;
-        loop {
-            let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
-            }
+        self.next()?;
+        self.block_items("global_settings", "global_settings", (), |ev, tok, ()| {
             let Some(word) = tok.ident() else {
-                return Err(self.stray_in_block(&tok, "global_settings"));
+                return Err(ev.stray_in_block(tok, "global_settings"));
             };
             let word = word.to_string();
-            self.next()?;
+            ev.next()?;
             match word.as_str() {
-                "assumed_gamma" => self.scene.settings.assumed_gamma = Some(self.float()?),
+                "assumed_gamma" => ev.scene.settings.assumed_gamma = Some(ev.float()?),
                 "max_trace_level" => {
-                    let f = self.float()?;
-                    self.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
+                    let f = ev.float()?;
+                    ev.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
                 }
-                "adc_bailout" => self.scene.settings.adc_bailout = self.float()?,
+                "adc_bailout" => ev.scene.settings.adc_bailout = ev.float()?,
                 "ambient_light" => {
-                    let (c, _) = self.colour()?;
-                    self.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);
+                    let (c, _) = ev.colour()?;
+                    ev.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);
                 }
                 "noise_generator" => {
-                    let g = self.float()?;
-                    self.scene.settings.noise_generator = g.clamp(1.0, 3.0) as u8;
+                    let g = ev.float()?;
+                    ev.scene.settings.noise_generator = g.clamp(1.0, 3.0) as u8;
                 }
                 "max_intersections" | "number_of_waves" => {
-                    self.float()?;
+                    ev.float()?;
                 }
                 "charset" => {
-                    self.next()?;
+                    ev.next()?;
                 }
                 "irid_wavelength" => {
-                    self.colour()?;
+                    ev.colour()?;
                 }
-                _ if self.skip_unsupported
+                _ if ev.skip_unsupported
                     && super::keywords::is_keyword(&word)
-                    && self.lookup(&word).is_none() =>
+                    && ev.lookup(&word).is_none() =>
                 {
-                    self.warn(
+                    ev.warn(
                         tok.span,
                         format!("unsupported: `{word}` is not supported yet; it is left out"),
                     );
-                    self.skip_feature_body()?;
+                    ev.skip_feature_body()?;
                 }
-                _ => return Err(self.stray_in_block(&tok, "global_settings")),
+                _ => return Err(ev.stray_in_block(tok, "global_settings")),
             }
-        }
-        self.block_end(open, "global_settings")
+            Ok(())
+        })
     }
 }
 
