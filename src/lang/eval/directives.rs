@@ -36,51 +36,15 @@ impl Evaluator<'_> {
         match name {
             "" => Ok(()),
             "declare" | "local" => self.declare(name == "local", span),
-            "version" => {
-                let v = match self.raw_peek(0).map(|t| t.kind.clone()) {
-                    Some(TokenKind::Number(n)) => {
-                        self.raw_next();
-                        n
-                    }
-                    _ => self.float()?,
-                };
-                self.eat_declare_semicolon();
-                self.scene.version = v;
-                Ok(())
-            }
+            "version" => self.version_directive(),
             "if" => {
                 let c = self.condition()?;
                 self.branch(c, span)
             }
-            "ifdef" | "ifndef" => {
-                self.expect(Punct::LParen, &format!("after `#{name}`"))?;
-                let id = self.raw_next();
-                let defined = match id.ident() {
-                    Some(n) => self.lookup(n).is_some(),
-                    None => return Err(self.expected("an identifier", &id)),
-                };
-                // `#ifdef (A[3])`: accept and ignore an index.
-                while !self.peek()?.is_punct(Punct::RParen) {
-                    let t = self.next()?;
-                    if t.kind == TokenKind::Eof {
-                        return Err(self.expected("`)`", &t));
-                    }
-                }
-                self.expect(Punct::RParen, &format!("to close `#{name}(`"))?;
-                self.branch(defined == (name == "ifdef"), span)
-            }
+            "ifdef" | "ifndef" => self.ifdef(name, span),
             "else" | "elseif" => self.else_while_running(name, span),
             "end" => self.end(span),
-            "while" => {
-                let at = self.frame_pos().saturating_sub(1);
-                self.count_iteration(span)?;
-                if self.condition()? {
-                    self.conds.push(Cond::While { span, at });
-                } else {
-                    self.skip_to_end(span)?;
-                }
-                Ok(())
-            }
+            "while" => self.while_directive(span),
             "for" => self.for_loop(span),
             "switch" => self.switch(span),
             "case" | "range" => {
@@ -91,41 +55,8 @@ impl Evaluator<'_> {
             "break" => self.break_block(span),
             "macro" => self.define_macro(span),
             "include" => self.include(span),
-            "debug" | "warning" | "error" => {
-                let (v, s) = self.expr()?;
-                let text = match v {
-                    Value::Str(t) => t,
-                    other => {
-                        return Err(
-                            self.err(s, format!("expected a string, found {}", other.kind_name()))
-                        );
-                    }
-                };
-                match name {
-                    "error" => Err(self.err(span, format!("#error: {}", text.trim_end()))),
-                    "warning" => {
-                        self.warn(span, text.trim_end().to_string());
-                        Ok(())
-                    }
-                    _ => {
-                        // A loop printing forever must not fill memory.
-                        if self.debug_output.len() < MAX_DEBUG_BYTES {
-                            self.debug_output.push_str(&text);
-                        }
-                        Ok(())
-                    }
-                }
-            }
-            "undef" => {
-                let id = self.raw_next();
-                let Some(n) = id.ident() else {
-                    return Err(self.expected("an identifier", &id));
-                };
-                if let Some(scope) = self.scopes.iter_mut().rev().find(|s| s.contains_key(n)) {
-                    scope.remove(n);
-                }
-                Ok(())
-            }
+            "debug" | "warning" | "error" => self.message_directive(name, span),
+            "undef" => self.undef(),
             "default" => self.default_directive(),
             "fopen" | "fclose" | "read" | "write" => Err(self.err(
                 span,
@@ -138,6 +69,88 @@ impl Evaluator<'_> {
             }
             other => Err(self.err(span, format!("unknown directive `#{other}`"))),
         }
+    }
+
+    /// `#version 3.7;`: a number as written is read raw, so the directive takes effect before
+    /// the next token is read.
+    fn version_directive(&mut self) -> R<()> {
+        let v = match self.raw_peek(0).map(|t| t.kind.clone()) {
+            Some(TokenKind::Number(n)) => {
+                self.raw_next();
+                n
+            }
+            _ => self.float()?,
+        };
+        self.eat_declare_semicolon();
+        self.scene.version = v;
+        Ok(())
+    }
+
+    /// `#ifdef (Name)` and `#ifndef (Name)`: the name is read raw, as it may be undeclared.
+    fn ifdef(&mut self, name: &str, span: Span) -> R<()> {
+        self.expect(Punct::LParen, &format!("after `#{name}`"))?;
+        let id = self.raw_next();
+        let defined = match id.ident() {
+            Some(n) => self.lookup(n).is_some(),
+            None => return Err(self.expected("an identifier", &id)),
+        };
+        // `#ifdef (A[3])`: accept and ignore an index.
+        while !self.peek()?.is_punct(Punct::RParen) {
+            let t = self.next()?;
+            if t.kind == TokenKind::Eof {
+                return Err(self.expected("`)`", &t));
+            }
+        }
+        self.expect(Punct::RParen, &format!("to close `#{name}(`"))?;
+        self.branch(defined == (name == "ifdef"), span)
+    }
+
+    /// `#while (c)`: remembers where it starts, so `#end` can come back to test again.
+    fn while_directive(&mut self, span: Span) -> R<()> {
+        let at = self.frame_pos().saturating_sub(1);
+        self.count_iteration(span)?;
+        if self.condition()? {
+            self.conds.push(Cond::While { span, at });
+        } else {
+            self.skip_to_end(span)?;
+        }
+        Ok(())
+    }
+
+    /// `#debug`, `#warning` and `#error` with their string.
+    fn message_directive(&mut self, name: &str, span: Span) -> R<()> {
+        let (v, s) = self.expr()?;
+        let text = match v {
+            Value::Str(t) => t,
+            other => {
+                return Err(self.err(s, format!("expected a string, found {}", other.kind_name())));
+            }
+        };
+        match name {
+            "error" => Err(self.err(span, format!("#error: {}", text.trim_end()))),
+            "warning" => {
+                self.warn(span, text.trim_end().to_string());
+                Ok(())
+            }
+            _ => {
+                // A loop printing forever must not fill memory.
+                if self.debug_output.len() < MAX_DEBUG_BYTES {
+                    self.debug_output.push_str(&text);
+                }
+                Ok(())
+            }
+        }
+    }
+
+    fn undef(&mut self) -> R<()> {
+        let id = self.raw_next();
+        let Some(n) = id.ident() else {
+            return Err(self.expected("an identifier", &id));
+        };
+        if let Some(scope) = self.scopes.iter_mut().rev().find(|s| s.contains_key(n)) {
+            scope.remove(n);
+        }
+        Ok(())
     }
 
     /// `(expression)` after `#if`, `#while`, `#elseif`: any float, nonzero is true.

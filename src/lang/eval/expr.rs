@@ -4,14 +4,14 @@
 
 use std::rc::Rc;
 
-use glam::{DMat3, DVec3};
+use glam::DVec3;
 
 use super::super::diagnostics::Span;
 use super::super::syntax::{Punct, Token, TokenKind};
 use super::Evaluator;
+use super::functions::{self, Builtin};
 use super::value::{BinOp, Value, Vector, arith, negate};
 use crate::lang::diagnostics::Diagnostic;
-use crate::scene::Transform;
 
 type R<T> = Result<T, Diagnostic>;
 
@@ -403,16 +403,19 @@ impl Evaluator<'_> {
             self.next()?;
             return Ok((v, span));
         }
-        if super::keywords::is_function(name) {
-            self.next()?;
-            return self.call_function(tok, name);
+        match functions::builtin(name) {
+            Some(b) if b.is_supported() => {
+                self.next()?;
+                return self.call_function(tok, b);
+            }
+            Some(_) => return Err(self.unsupported(tok, name)),
+            None => {}
         }
         if super::keywords::is_keyword(name) {
-            if super::keywords::is_known_unsupported_function(name) {
-                return Err(self.unsupported(tok, name));
-            }
             return Err(self.expected("an expression", tok));
         }
+        // Also a name called as a function that is neither built in nor a macro (macro
+        // calls never get here): it gets the same hint as any unknown name.
         Err(self.unknown_identifier(tok, name))
     }
 
@@ -529,16 +532,17 @@ impl Evaluator<'_> {
         Ok(out)
     }
 
-    fn call_function(&mut self, tok: &Token, name: &str) -> R<(Value, Span)> {
-        let open = self.expect(Punct::LParen, &format!("after `{name}`"))?;
+    fn call_function(&mut self, tok: &Token, b: &Builtin) -> R<(Value, Span)> {
+        let open = self.expect(Punct::LParen, &format!("after `{}`", b.name))?;
         self.enter(open.span)?;
-        let r = self.function_body(tok, name);
+        let r = self.function_body(tok, b);
         self.leave();
         r
     }
 
-    fn function_body(&mut self, tok: &Token, name: &str) -> R<(Value, Span)> {
-        if name == "defined" {
+    fn function_body(&mut self, tok: &Token, b: &Builtin) -> R<(Value, Span)> {
+        let name = b.name;
+        if matches!(b.eval, functions::Eval::Defined) {
             let id = self.raw_next();
             let close = self.expect(Punct::RParen, "to close `defined(`")?;
             let defined = id.ident().is_some_and(|n| self.lookup(n).is_some());
@@ -563,300 +567,13 @@ impl Evaluator<'_> {
         self.in_vector = saved;
         let close = r?;
         let span = tok.span.join(close.span);
-        let v = self.apply_function(name, &args, span)?;
+        let call = functions::Call {
+            name,
+            args: &args,
+            span,
+        };
+        let v = self.apply_builtin(b, &call)?;
         Ok((v, span))
-    }
-
-    fn arg_count(&self, name: &str, args: &[(Value, Span)], n: usize, span: Span) -> R<()> {
-        if args.len() != n {
-            return Err(self.err(
-                span,
-                format!(
-                    "`{name}` takes {n} argument{}, found {}",
-                    if n == 1 { "" } else { "s" },
-                    args.len()
-                ),
-            ));
-        }
-        Ok(())
-    }
-
-    fn apply_function(&mut self, name: &str, args: &[(Value, Span)], span: Span) -> R<Value> {
-        let f = |i: usize| -> R<f64> { self.to_float(&args[i].0, args[i].1) };
-        let v3 = |i: usize| -> R<DVec3> { self.to_vec3(&args[i].0, args[i].1) };
-        let s = |i: usize| -> R<Rc<str>> {
-            match &args[i].0 {
-                Value::Str(s) => Ok(s.clone()),
-                other => Err(self.err(
-                    args[i].1,
-                    format!("expected a string, found {}", other.kind_name()),
-                )),
-            }
-        };
-        let unary = |g: fn(f64) -> f64| -> R<Value> {
-            self.arg_count(name, args, 1, span)?;
-            Ok(Value::Float(g(f(0)?)))
-        };
-        let out = match name {
-            "sin" => unary(f64::sin)?,
-            "cos" => unary(f64::cos)?,
-            "tan" => unary(f64::tan)?,
-            "asin" => unary(f64::asin)?,
-            "acos" => unary(f64::acos)?,
-            "atan" => unary(f64::atan)?,
-            "sinh" => unary(f64::sinh)?,
-            "cosh" => unary(f64::cosh)?,
-            "tanh" => unary(f64::tanh)?,
-            "asinh" => unary(f64::asinh)?,
-            "acosh" => unary(f64::acosh)?,
-            "atanh" => unary(f64::atanh)?,
-            "sqrt" => unary(f64::sqrt)?,
-            "sqr" => unary(|x| x * x)?,
-            "exp" => unary(f64::exp)?,
-            "ln" => unary(f64::ln)?,
-            "log" => unary(f64::log10)?,
-            "abs" => unary(f64::abs)?,
-            "floor" => unary(f64::floor)?,
-            "ceil" => unary(f64::ceil)?,
-            "int" => unary(f64::trunc)?,
-            "radians" => unary(f64::to_radians)?,
-            "degrees" => unary(f64::to_degrees)?,
-            "atan2" | "pow" | "mod" | "div" => {
-                self.arg_count(name, args, 2, span)?;
-                let (a, b) = (f(0)?, f(1)?);
-                if (name == "mod" || name == "div") && b == 0.0 {
-                    return Err(self.err(args[1].1, "division by zero"));
-                }
-                Value::Float(match name {
-                    "atan2" => a.atan2(b),
-                    "pow" => a.powf(b),
-                    "mod" => a % b,
-                    _ => (a / b).trunc(),
-                })
-            }
-            "min" | "max" => {
-                if args.is_empty() {
-                    return Err(self.err(span, format!("`{name}` needs at least one argument")));
-                }
-                let mut m = f(0)?;
-                for i in 1..args.len() {
-                    let x = f(i)?;
-                    m = if name == "min" { m.min(x) } else { m.max(x) };
-                }
-                Value::Float(m)
-            }
-            "select" => {
-                if args.len() != 3 && args.len() != 4 {
-                    return Err(self.err(span, "`select` takes 3 or 4 arguments"));
-                }
-                let c = f(0)?;
-                if args.len() == 3 {
-                    if c < 0.0 {
-                        args[1].0.clone()
-                    } else {
-                        args[2].0.clone()
-                    }
-                } else if c < 0.0 {
-                    args[1].0.clone()
-                } else if c == 0.0 {
-                    args[2].0.clone()
-                } else {
-                    args[3].0.clone()
-                }
-            }
-            "bitwise_and" | "bitwise_or" | "bitwise_xor" => {
-                if args.is_empty() {
-                    return Err(self.err(span, format!("`{name}` needs arguments")));
-                }
-                let mut acc = f(0)? as i64;
-                for i in 1..args.len() {
-                    let b = f(i)? as i64;
-                    acc = match name {
-                        "bitwise_and" => acc & b,
-                        "bitwise_or" => acc | b,
-                        _ => acc ^ b,
-                    };
-                }
-                Value::Float(acc as f64)
-            }
-            "vlength" => {
-                self.arg_count(name, args, 1, span)?;
-                Value::Float(vector_len(&args[0].0).unwrap_or(v3(0)?.length()))
-            }
-            "vnormalize" => {
-                self.arg_count(name, args, 1, span)?;
-                let v = v3(0)?;
-                let l = v.length();
-                if l == 0.0 {
-                    return Err(self.err(args[0].1, "cannot normalize a zero-length vector"));
-                }
-                Value::Vector(Vector::new3(v / l))
-            }
-            "vdot" => {
-                self.arg_count(name, args, 2, span)?;
-                Value::Float(v3(0)?.dot(v3(1)?))
-            }
-            "vcross" => {
-                self.arg_count(name, args, 2, span)?;
-                Value::Vector(Vector::new3(v3(0)?.cross(v3(1)?)))
-            }
-            "vrotate" => {
-                self.arg_count(name, args, 2, span)?;
-                Value::Vector(Vector::new3(Transform::rotate(v3(1)?).vector(v3(0)?)))
-            }
-            "vaxis_rotate" => {
-                self.arg_count(name, args, 3, span)?;
-                let axis = v3(1)?;
-                if axis.length() == 0.0 {
-                    return Err(self.err(args[1].1, "the rotation axis has zero length"));
-                }
-                let m = DMat3::from_axis_angle(axis.normalize(), f(2)?.to_radians());
-                Value::Vector(Vector::new3(m * v3(0)?))
-            }
-            "str" => {
-                self.arg_count(name, args, 3, span)?;
-                Value::Str(Rc::from(format_float(f(0)?, f(1)?, f(2)?)))
-            }
-            "vstr" => {
-                self.arg_count(name, args, 5, span)?;
-                let (c, len) = match &args[1].0 {
-                    Value::Vector(v) => (v.c, v.len as usize),
-                    Value::Colour(c) => (*c, 5),
-                    Value::Float(x) => ([*x; 5], 5),
-                    other => {
-                        return Err(self.err(
-                            args[1].1,
-                            format!("expected a vector, found {}", other.kind_name()),
-                        ));
-                    }
-                };
-                let n = (f(0)?.max(0.0) as usize).min(len).min(5);
-                let sep = s(2)?;
-                let (l, p) = (f(3)?, f(4)?);
-                let parts: Vec<String> = c[..n].iter().map(|x| format_float(*x, l, p)).collect();
-                Value::Str(Rc::from(parts.join(&sep)))
-            }
-            "concat" => {
-                let mut out = String::new();
-                for i in 0..args.len() {
-                    out.push_str(&s(i)?);
-                }
-                Value::Str(Rc::from(out))
-            }
-            "chr" => {
-                self.arg_count(name, args, 1, span)?;
-                let c = char::from_u32(f(0)?.max(0.0) as u32).unwrap_or('?');
-                Value::Str(Rc::from(c.to_string()))
-            }
-            "asc" => {
-                self.arg_count(name, args, 1, span)?;
-                Value::Float(s(0)?.chars().next().map_or(0.0, |c| f64::from(c as u32)))
-            }
-            "strlen" => {
-                self.arg_count(name, args, 1, span)?;
-                Value::Float(s(0)?.chars().count() as f64)
-            }
-            "strupr" | "strlwr" => {
-                self.arg_count(name, args, 1, span)?;
-                let t = s(0)?;
-                Value::Str(Rc::from(if name == "strupr" {
-                    t.to_uppercase()
-                } else {
-                    t.to_lowercase()
-                }))
-            }
-            "substr" => {
-                self.arg_count(name, args, 3, span)?;
-                let t: Vec<char> = s(0)?.chars().collect();
-                let start = f(1)? as i64 - 1;
-                let len = f(2)? as i64;
-                if start < 0 || len < 0 || start.saturating_add(len) as usize > t.len() {
-                    return Err(self.err(span, "`substr` range is outside the string"));
-                }
-                let out: String = t[start as usize..(start + len) as usize].iter().collect();
-                Value::Str(Rc::from(out))
-            }
-            "strcmp" => {
-                self.arg_count(name, args, 2, span)?;
-                Value::Float(match s(0)?.cmp(&s(1)?) {
-                    std::cmp::Ordering::Less => -1.0,
-                    std::cmp::Ordering::Equal => 0.0,
-                    std::cmp::Ordering::Greater => 1.0,
-                })
-            }
-            "val" => {
-                self.arg_count(name, args, 1, span)?;
-                Value::Float(s(0)?.trim().parse::<f64>().unwrap_or(0.0))
-            }
-            "file_exists" => {
-                self.arg_count(name, args, 1, span)?;
-                let name = s(0)?;
-                Value::Float(f64::from(u8::from(self.resolve_include(&name).is_some())))
-            }
-            "dimensions" => {
-                self.arg_count(name, args, 1, span)?;
-                match &args[0].0 {
-                    Value::Array(a) => Value::Float(a.borrow().dims.len() as f64),
-                    other => {
-                        return Err(self.err(
-                            args[0].1,
-                            format!("expected an array, found {}", other.kind_name()),
-                        ));
-                    }
-                }
-            }
-            "dimension_size" => {
-                self.arg_count(name, args, 2, span)?;
-                let dims = match &args[0].0 {
-                    Value::Array(a) => a.borrow().dims.clone(),
-                    other => {
-                        return Err(self.err(
-                            args[0].1,
-                            format!("expected an array, found {}", other.kind_name()),
-                        ));
-                    }
-                };
-                let n = f(1)?;
-                // POV-Ray counts dimensions from 1.
-                if n < 1.0 || n as usize > dims.len() {
-                    return Err(self.err(
-                        args[1].1,
-                        format!(
-                            "this array has {} dimensions, asked for dimension {n}",
-                            dims.len()
-                        ),
-                    ));
-                }
-                Value::Float(dims[n as usize - 1] as f64)
-            }
-            "seed" => {
-                self.arg_count(name, args, 1, span)?;
-                let seed = f(0)?;
-                if self.rng_states.len() >= MAX_RANDOM_STREAMS {
-                    return Err(self.err(
-                        span,
-                        format!("too many random streams (more than {MAX_RANDOM_STREAMS})"),
-                    ));
-                }
-                self.rng_states.push(u64::from(seed_state(seed)));
-                Value::Float((self.rng_states.len() - 1) as f64)
-            }
-            "rand" => {
-                self.arg_count(name, args, 1, span)?;
-                let i = f(0)?;
-                let state = if i >= 0.0 {
-                    self.rng_states.get_mut(i as usize)
-                } else {
-                    None
-                };
-                let Some(state) = state else {
-                    return Err(self.err(args[0].1, "`rand` needs a stream made by `seed`"));
-                };
-                Value::Float(next_random(state))
-            }
-            _ => return Err(self.err(span, format!("unsupported: `{name}` is not supported yet"))),
-        };
-        Ok(out)
     }
 
     fn index_array(&mut self, v: &Value) -> R<Value> {
@@ -904,66 +621,10 @@ impl Evaluator<'_> {
     }
 }
 
-fn vector_len(v: &Value) -> Option<f64> {
-    match v {
-        Value::Vector(v) => Some(
-            v.c[..v.len as usize]
-                .iter()
-                .map(|x| x * x)
-                .sum::<f64>()
-                .sqrt(),
-        ),
-        _ => None,
-    }
-}
-
-/// `str(value, length, precision)`: at least `length` characters (negative: pad with
-/// zeros), `precision` decimals (negative: 6).
-fn format_float(x: f64, len: f64, prec: f64) -> String {
-    let prec = if prec < 0.0 {
-        6
-    } else {
-        prec.min(20.0) as usize
-    };
-    let width = len.abs().min(64.0) as usize;
-    if len < 0.0 {
-        format!("{x:0width$.prec$}")
-    } else {
-        format!("{x:width$.prec$}")
-    }
-}
-
 fn srgb_decode(v: f64) -> f64 {
     if v <= 0.04045 {
         v / 12.92
     } else {
         ((v + 0.055) / 1.055).powf(2.4)
     }
-}
-
-/// `seed(n)` streams a scene may make; scenes make a handful, a loop making millions is a
-/// mistake that would otherwise only end when memory does.
-const MAX_RANDOM_STREAMS: usize = 1_000_000;
-
-/// The 32-bit state `seed(n)` starts from. Measured from POV-Ray 3.7's `#debug` output: the
-/// float is truncated to a 32-bit integer, and out-of-range values (and NaN) become
-/// 0x8000_0000, as the x86 conversion instruction gives.
-fn seed_state(n: f64) -> u32 {
-    if n.is_finite() && n > -2_147_483_649.0 && n < 2_147_483_648.0 {
-        n.trunc() as i32 as u32
-    } else {
-        0x8000_0000
-    }
-}
-
-/// POV-Ray 3.7's `rand` sequence, reproduced because scenes place objects with it: a 32-bit
-/// linear congruential step (multiplier 1812433253, increment 12345), the new state divided
-/// by 2^32 - 1. Checked against the installed POV-Ray's `#debug` output for several seeds
-/// (see the `rand_matches_povray` test).
-fn next_random(state: &mut u64) -> f64 {
-    let next = (*state as u32)
-        .wrapping_mul(1_812_433_253)
-        .wrapping_add(12_345);
-    *state = u64::from(next);
-    f64::from(next) / f64::from(u32::MAX)
 }

@@ -173,6 +173,33 @@ impl Evaluator<'_> {
         Ok(())
     }
 
+    /// `{ items }` after `keyword`, for blocks that are a list of items: one place for the
+    /// nesting guard, the stop at `}` and the error when it is missing. `item` reads one
+    /// item, starting at the token given, into `state`.
+    pub(super) fn block_items<T>(
+        &mut self,
+        keyword: &str,
+        what: &str,
+        mut state: T,
+        mut item: impl FnMut(&mut Self, &Token, &mut T) -> R<()>,
+    ) -> R<T> {
+        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
+        self.enter(open.span)?;
+        let r = (|| -> R<()> {
+            loop {
+                let tok = self.peek()?;
+                if tok.is_punct(Punct::RBrace) {
+                    return Ok(());
+                }
+                item(self, &tok, &mut state)?;
+            }
+        })();
+        self.leave();
+        r?;
+        self.expect(Punct::RBrace, &format!("to close {what}"))?;
+        Ok(state)
+    }
+
     /// The error for a token that does not belong in a block: unsupported feature, unknown
     /// name, or a missing `}`.
     pub(super) fn stray_in_block(&self, tok: &Token, what: &str) -> Diagnostic {
@@ -190,132 +217,154 @@ impl Evaluator<'_> {
     }
 
     fn sky_sphere(&mut self) -> R<crate::scene::SkySphere> {
-        let open = self.block_start("sky_sphere")?;
-        let mut sky = crate::scene::SkySphere {
+        let sky = crate::scene::SkySphere {
             pigments: Vec::new(),
             emission: DVec3::ONE,
         };
-        loop {
-            let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
-            }
+        self.next()?;
+        self.block_items("sky_sphere", "the sky_sphere", sky, |ev, tok, sky| {
             match tok.ident() {
                 Some("pigment") => {
-                    self.next()?;
-                    let p = self.pigment_body(crate::scene::Pigment::default())?;
+                    ev.next()?;
+                    let p = ev.pigment_body(crate::scene::Pigment::default())?;
                     sky.pigments.push(p);
                 }
                 Some("emission") => {
-                    self.next()?;
-                    let (c, _) = self.colour()?;
+                    ev.next()?;
+                    let (c, _) = ev.colour()?;
                     sky.emission = DVec3::new(c[0], c[1], c[2]);
                 }
-                Some(word) if matches!(self.lookup(word), Some(Value::SkySphere(_))) => {
-                    if let Some(Value::SkySphere(named)) = self.lookup(word).cloned() {
-                        sky = *named;
+                Some(word) if matches!(ev.lookup(word), Some(Value::SkySphere(_))) => {
+                    if let Some(Value::SkySphere(named)) = ev.lookup(word).cloned() {
+                        *sky = *named;
                     }
-                    self.next()?;
+                    ev.next()?;
                 }
                 _ => {
-                    if let Some(t) = self.transform_modifier()? {
+                    if let Some(t) = ev.transform_modifier()? {
                         for p in &mut sky.pigments {
                             p.transform_by(&t);
                         }
-                        continue;
+                        return Ok(());
                     }
-                    return Err(self.stray_in_block(&tok, "the sky_sphere"));
+                    return Err(ev.stray_in_block(tok, "the sky_sphere"));
                 }
             }
-        }
-        self.block_end(open, "the sky_sphere")?;
-        Ok(sky)
+            Ok(())
+        })
     }
 
     fn camera_block(&mut self) -> R<CameraSpec> {
-        let open = self.block_start("camera")?;
-        let mut spec = CameraSpec::default();
+        self.next()?;
+        self.block_items(
+            "camera",
+            "the camera",
+            CameraSpec::default(),
+            |ev, tok, spec| {
+                let Some(word) = tok.ident() else {
+                    return Err(ev.stray_in_block(tok, "the camera"));
+                };
+                match word {
+                    "perspective" => {
+                        ev.next()?;
+                        spec.orthographic = false;
+                    }
+                    "orthographic" => {
+                        ev.next()?;
+                        spec.orthographic = true;
+                    }
+                    "location" | "look_at" | "right" | "up" | "direction" | "sky" => {
+                        let word = word.to_string();
+                        ev.next()?;
+                        let v = ev.vector3()?;
+                        match word.as_str() {
+                            "location" => spec.location = v,
+                            "look_at" => spec.look_at = Some(v),
+                            "right" => spec.right = v,
+                            "up" => spec.up = v,
+                            "direction" => spec.direction = v,
+                            _ => spec.sky = v,
+                        }
+                    }
+                    "angle" => {
+                        ev.next()?;
+                        spec.angle = Some(ev.float()?);
+                    }
+                    "aperture" => {
+                        ev.next()?;
+                        spec.aperture = ev.float()?.max(0.0);
+                    }
+                    "focal_point" => {
+                        ev.next()?;
+                        spec.focal_point = ev.vector3()?;
+                    }
+                    "blur_samples" => {
+                        ev.next()?;
+                        spec.blur_samples = ev.float()?.max(0.0) as u32;
+                        // POV-Ray 3.7 also takes `blur_samples min, max`.
+                        if ev.eat(Punct::Comma)? {
+                            spec.blur_samples = ev.float()?.max(0.0) as u32;
+                        }
+                    }
+                    "confidence" | "variance" => {
+                        // Settings of POV-Ray's adaptive blur sampling; penumbra samples the lens
+                        // over a pixel's samples instead.
+                        ev.next()?;
+                        ev.float()?;
+                    }
+                    "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
+                    | "cylinder" | "mesh_camera" | "normal" => {
+                        let word = word.to_string();
+                        ev.unsupported_or_skip(tok, &word)?;
+                    }
+                    _ => {
+                        if let Some(Value::Camera(c)) = ev.lookup(word).cloned() {
+                            ev.next()?;
+                            *spec = *c;
+                            return Ok(());
+                        }
+                        if let Some(t) = ev.transform_modifier()? {
+                            spec.transform = spec.transform.then(&t);
+                            return Ok(());
+                        }
+                        return Err(ev.stray_in_block(tok, "the camera"));
+                    }
+                }
+                Ok(())
+            },
+        )
+    }
+
+    pub(super) fn light_source(&mut self) -> R<Light> {
+        let open = self.block_start("light_source")?;
+        let mut d = LightDraft::new(self.light_start()?);
         loop {
             let tok = self.peek()?;
             if tok.is_punct(Punct::RBrace) {
                 break;
             }
             let Some(word) = tok.ident() else {
-                return Err(self.stray_in_block(&tok, "the camera"));
+                return Err(self.stray_in_block(&tok, "the light_source"));
             };
-            match word {
-                "perspective" => {
-                    self.next()?;
-                    spec.orthographic = false;
-                }
-                "orthographic" => {
-                    self.next()?;
-                    spec.orthographic = true;
-                }
-                "location" | "look_at" | "right" | "up" | "direction" | "sky" => {
-                    let word = word.to_string();
-                    self.next()?;
-                    let v = self.vector3()?;
-                    match word.as_str() {
-                        "location" => spec.location = v,
-                        "look_at" => spec.look_at = Some(v),
-                        "right" => spec.right = v,
-                        "up" => spec.up = v,
-                        "direction" => spec.direction = v,
-                        _ => spec.sky = v,
-                    }
-                }
-                "angle" => {
-                    self.next()?;
-                    spec.angle = Some(self.float()?);
-                }
-                "aperture" => {
-                    self.next()?;
-                    spec.aperture = self.float()?.max(0.0);
-                }
-                "focal_point" => {
-                    self.next()?;
-                    spec.focal_point = self.vector3()?;
-                }
-                "blur_samples" => {
-                    self.next()?;
-                    spec.blur_samples = self.float()?.max(0.0) as u32;
-                    // POV-Ray 3.7 also takes `blur_samples min, max`.
-                    if self.eat(Punct::Comma)? {
-                        spec.blur_samples = self.float()?.max(0.0) as u32;
-                    }
-                }
-                "confidence" | "variance" => {
-                    // Settings of POV-Ray's adaptive blur sampling; penumbra samples the lens
-                    // over a pixel's samples instead.
-                    self.next()?;
-                    self.float()?;
-                }
-                "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
-                | "cylinder" | "mesh_camera" | "normal" => {
-                    let word = word.to_string();
-                    self.unsupported_or_skip(&tok, &word)?;
-                }
-                _ => {
-                    if let Some(Value::Camera(c)) = self.lookup(word).cloned() {
-                        self.next()?;
-                        spec = *c;
-                        continue;
-                    }
-                    if let Some(t) = self.transform_modifier()? {
-                        spec.transform = spec.transform.then(&t);
-                        continue;
-                    }
-                    return Err(self.stray_in_block(&tok, "the camera"));
-                }
+            let word = word.to_string();
+            let known = self.area_light_item(&mut d.area, &word)?
+                || self.light_kind_item(&mut d, &word)?
+                || self.light_item(&mut d.light, &tok, &word)?;
+            if known {
+                continue;
             }
+            let Some(t) = self.transform_modifier()? else {
+                return Err(self.stray_in_block(&tok, "the light_source"));
+            };
+            d.transform(&t);
         }
-        self.block_end(open, "the camera")?;
-        Ok(spec)
+        let light = d.finish();
+        self.block_end(open, "the light_source")?;
+        Ok(light)
     }
 
-    pub(super) fn light_source(&mut self) -> R<Light> {
-        let open = self.block_start("light_source")?;
+    /// `Name` (a declared light) or `location, colour`: what a light block starts with.
+    fn light_start(&mut self) -> R<Light> {
         let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
         let first = self.peek()?;
         if let Some(Value::Object(o)) = first.ident().and_then(|w| self.lookup(w)).cloned() {
@@ -329,177 +378,134 @@ impl Evaluator<'_> {
             let (c, _) = self.colour()?;
             light.colour = DVec3::new(c[0], c[1], c[2]);
         }
-        let mut has_area = light.area.is_some();
-        let mut pending = light.area.unwrap_or(AreaLight {
-            axis1: DVec3::ZERO,
-            axis2: DVec3::ZERO,
-            size1: 1,
-            size2: 1,
-            adaptive: None,
-            jitter: false,
-            circular: false,
-            orient: false,
-        });
-        let mut spot = matches!(light.kind, LightKind::Spot { .. });
-        let mut parallel = matches!(light.kind, LightKind::Parallel { .. });
-        let mut cylinder = matches!(light.kind, LightKind::Cylinder { .. });
-        let (mut point_at, mut radius, mut falloff, mut tightness) = match light.kind {
-            LightKind::Point => (DVec3::Z, 30.0, 45.0, 0.0),
-            LightKind::Spot {
-                point_at,
-                radius,
-                falloff,
-                tightness,
-            } => (point_at, radius, falloff, tightness),
-            LightKind::Parallel { point_at } => (point_at, 30.0, 45.0, 0.0),
-            LightKind::Cylinder {
-                point_at,
-                radius,
-                falloff,
-                tightness,
-            } => (point_at, radius, falloff, tightness),
-        };
-        loop {
-            let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
-            }
-            let Some(word) = tok.ident() else {
-                return Err(self.stray_in_block(&tok, "the light_source"));
-            };
-            let word = word.to_string();
-            match word.as_str() {
-                "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
-                    let (c, _) = self.colour()?;
-                    light.colour = DVec3::new(c[0], c[1], c[2]);
-                }
-                "area_light" => {
-                    self.next()?;
-                    let axis1 = self.vector3()?;
-                    self.eat(Punct::Comma)?;
-                    let axis2 = self.vector3()?;
-                    self.eat(Punct::Comma)?;
-                    let size1 = self.count()?;
-                    self.eat(Punct::Comma)?;
-                    let size2 = self.count()?;
-                    pending.axis1 = axis1;
-                    pending.axis2 = axis2;
-                    pending.size1 = size1;
-                    pending.size2 = size2;
-                    has_area = true;
-                }
-                "adaptive" => {
-                    self.next()?;
-                    let k = self.float()?;
-                    pending.adaptive = Some(k.max(0.0) as u32);
-                }
-                // Without an `area_light` these do nothing, as in POV-Ray; they are kept
-                // in case the `area_light` comes later in the block.
-                "jitter" => {
-                    self.next()?;
-                    pending.jitter = true;
-                }
-                "circular" => {
-                    self.next()?;
-                    pending.circular = true;
-                }
-                "orient" => {
-                    self.next()?;
-                    pending.orient = true;
-                }
-                "shadowless" => {
-                    self.next()?;
-                    light.shadowless = true;
-                }
-                "area_illumination" => {
-                    self.next()?;
-                    light.area_illumination = self.optional_bool()?;
-                }
-                "media_interaction" | "media_attenuation" => {
-                    // Only matters with media, which penumbra does not have.
-                    self.next()?;
-                    self.optional_bool()?;
-                }
-                "fade_distance" => {
-                    self.next()?;
-                    light.fade_distance = self.float()?;
-                }
-                "fade_power" => {
-                    self.next()?;
-                    light.fade_power = self.float()?;
-                }
-                "spotlight" => {
-                    self.next()?;
-                    spot = true;
-                }
-                "parallel" => {
-                    self.next()?;
-                    parallel = true;
-                }
-                "point_at" => {
-                    self.next()?;
-                    point_at = self.vector3()?;
-                }
-                "radius" => {
-                    self.next()?;
-                    radius = self.float()?;
-                }
-                "falloff" => {
-                    self.next()?;
-                    falloff = self.float()?;
-                }
-                "tightness" => {
-                    self.next()?;
-                    tightness = self.float()?;
-                }
-                "cylinder" => {
-                    self.next()?;
-                    cylinder = true;
-                }
-                "looks_like" => {
-                    let open = self.block_start("looks_like")?;
-                    let value = self.object()?;
-                    self.block_end(open, "looks_like")?;
-                    if let Some(mut object) = value.object {
-                        // The object is modelled at the origin and travels with the light;
-                        // it must not shadow the light it surrounds.
-                        object.transform_by(&crate::scene::Transform::translate(light.location));
-                        object.flags.no_shadow = true;
-                        light.looks_like = Some(Box::new(object));
-                    }
-                }
-                "projected_through" | "photons" => {
-                    self.unsupported_or_skip(&tok, &word)?;
-                }
-                _ => {
-                    if let Some(t) = self.transform_modifier()? {
-                        // Keep the spotlight target in the light's kind while transforming.
-                        light.kind = kind_of(
-                            spot, parallel, cylinder, point_at, radius, falloff, tightness,
-                        );
-                        light.area = has_area.then_some(pending);
-                        transform_light(&mut light, &t);
-                        if let Some(a) = light.area {
-                            pending = a;
-                        }
-                        point_at = match light.kind {
-                            LightKind::Spot { point_at, .. }
-                            | LightKind::Cylinder { point_at, .. }
-                            | LightKind::Parallel { point_at } => point_at,
-                            LightKind::Point => t.point(point_at),
-                        };
-                        continue;
-                    }
-                    return Err(self.stray_in_block(&tok, "the light_source"));
-                }
-            }
-        }
-        light.kind = kind_of(
-            spot, parallel, cylinder, point_at, radius, falloff, tightness,
-        );
-        light.area = has_area.then_some(pending);
-        self.block_end(open, "the light_source")?;
         Ok(light)
+    }
+
+    /// `area_light` and the items that shape it; false for other words.
+    fn area_light_item(&mut self, area: &mut (bool, AreaLight), word: &str) -> R<bool> {
+        let (has_area, pending) = area;
+        match word {
+            "area_light" => {
+                self.next()?;
+                let axis1 = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let axis2 = self.vector3()?;
+                self.eat(Punct::Comma)?;
+                let size1 = self.count()?;
+                self.eat(Punct::Comma)?;
+                let size2 = self.count()?;
+                pending.axis1 = axis1;
+                pending.axis2 = axis2;
+                pending.size1 = size1;
+                pending.size2 = size2;
+                *has_area = true;
+            }
+            "adaptive" => {
+                self.next()?;
+                let k = self.float()?;
+                pending.adaptive = Some(k.max(0.0) as u32);
+            }
+            // Without an `area_light` these do nothing, as in POV-Ray; they are kept
+            // in case the `area_light` comes later in the block.
+            "jitter" => {
+                self.next()?;
+                pending.jitter = true;
+            }
+            "circular" => {
+                self.next()?;
+                pending.circular = true;
+            }
+            "orient" => {
+                self.next()?;
+                pending.orient = true;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// `spotlight`, `parallel`, `cylinder` and their cone; false for other words.
+    fn light_kind_item(&mut self, d: &mut LightDraft, word: &str) -> R<bool> {
+        match word {
+            "spotlight" => {
+                self.next()?;
+                d.spot = true;
+            }
+            "parallel" => {
+                self.next()?;
+                d.parallel = true;
+            }
+            "cylinder" => {
+                self.next()?;
+                d.cylinder = true;
+            }
+            "point_at" => {
+                self.next()?;
+                d.point_at = self.vector3()?;
+            }
+            "radius" => {
+                self.next()?;
+                d.radius = self.float()?;
+            }
+            "falloff" => {
+                self.next()?;
+                d.falloff = self.float()?;
+            }
+            "tightness" => {
+                self.next()?;
+                d.tightness = self.float()?;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// Colour, fading, shadows and `looks_like`; false for other words.
+    fn light_item(&mut self, light: &mut Light, tok: &Token, word: &str) -> R<bool> {
+        match word {
+            "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
+                let (c, _) = self.colour()?;
+                light.colour = DVec3::new(c[0], c[1], c[2]);
+            }
+            "shadowless" => {
+                self.next()?;
+                light.shadowless = true;
+            }
+            "area_illumination" => {
+                self.next()?;
+                light.area_illumination = self.optional_bool()?;
+            }
+            "media_interaction" | "media_attenuation" => {
+                // Only matters with media, which penumbra does not have.
+                self.next()?;
+                self.optional_bool()?;
+            }
+            "fade_distance" => {
+                self.next()?;
+                light.fade_distance = self.float()?;
+            }
+            "fade_power" => {
+                self.next()?;
+                light.fade_power = self.float()?;
+            }
+            "looks_like" => {
+                let open = self.block_start("looks_like")?;
+                let value = self.object()?;
+                self.block_end(open, "looks_like")?;
+                if let Some(mut object) = value.object {
+                    // The object is modelled at the origin and travels with the light;
+                    // it must not shadow the light it surrounds.
+                    object.transform_by(&crate::scene::Transform::translate(light.location));
+                    object.flags.no_shadow = true;
+                    light.looks_like = Some(Box::new(object));
+                }
+            }
+            "projected_through" | "photons" => {
+                self.unsupported_or_skip(tok, word)?;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
     }
 
     /// A positive whole number (grid sizes).
@@ -539,55 +545,144 @@ impl Evaluator<'_> {
     }
 
     fn global_settings(&mut self) -> R<()> {
-        let open = self.block_start("global_settings")?;
-        loop {
-            let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
-            }
+        self.next()?;
+        self.block_items("global_settings", "global_settings", (), |ev, tok, ()| {
             let Some(word) = tok.ident() else {
-                return Err(self.stray_in_block(&tok, "global_settings"));
+                return Err(ev.stray_in_block(tok, "global_settings"));
             };
             let word = word.to_string();
-            self.next()?;
+            ev.next()?;
             match word.as_str() {
-                "assumed_gamma" => self.scene.settings.assumed_gamma = Some(self.float()?),
+                "assumed_gamma" => ev.scene.settings.assumed_gamma = Some(ev.float()?),
                 "max_trace_level" => {
-                    let f = self.float()?;
-                    self.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
+                    let f = ev.float()?;
+                    ev.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
                 }
-                "adc_bailout" => self.scene.settings.adc_bailout = self.float()?,
+                "adc_bailout" => ev.scene.settings.adc_bailout = ev.float()?,
                 "ambient_light" => {
-                    let (c, _) = self.colour()?;
-                    self.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);
+                    let (c, _) = ev.colour()?;
+                    ev.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);
                 }
                 "noise_generator" => {
-                    let g = self.float()?;
-                    self.scene.settings.noise_generator = g.clamp(1.0, 3.0) as u8;
+                    let g = ev.float()?;
+                    ev.scene.settings.noise_generator = g.clamp(1.0, 3.0) as u8;
                 }
                 "max_intersections" | "number_of_waves" => {
-                    self.float()?;
+                    ev.float()?;
                 }
                 "charset" => {
-                    self.next()?;
+                    ev.next()?;
                 }
                 "irid_wavelength" => {
-                    self.colour()?;
+                    ev.colour()?;
                 }
-                _ if self.skip_unsupported
+                _ if ev.skip_unsupported
                     && super::keywords::is_keyword(&word)
-                    && self.lookup(&word).is_none() =>
+                    && ev.lookup(&word).is_none() =>
                 {
-                    self.warn(
+                    ev.warn(
                         tok.span,
                         format!("unsupported: `{word}` is not supported yet; it is left out"),
                     );
-                    self.skip_feature_body()?;
+                    ev.skip_feature_body()?;
                 }
-                _ => return Err(self.stray_in_block(&tok, "global_settings")),
+                _ => return Err(ev.stray_in_block(tok, "global_settings")),
             }
+            Ok(())
+        })
+    }
+}
+
+/// A light while its block is read: the kind and the area light are only settled at the
+/// end, since `spotlight`, `radius` or `area_light` may come in any order.
+struct LightDraft {
+    light: Light,
+    /// Whether there is an area light, and its settings so far.
+    area: (bool, AreaLight),
+    spot: bool,
+    parallel: bool,
+    cylinder: bool,
+    point_at: DVec3,
+    radius: f64,
+    falloff: f64,
+    tightness: f64,
+}
+
+impl LightDraft {
+    fn new(light: Light) -> LightDraft {
+        let has_area = light.area.is_some();
+        let pending = light.area.unwrap_or(AreaLight {
+            axis1: DVec3::ZERO,
+            axis2: DVec3::ZERO,
+            size1: 1,
+            size2: 1,
+            adaptive: None,
+            jitter: false,
+            circular: false,
+            orient: false,
+        });
+        let (point_at, radius, falloff, tightness) = match light.kind {
+            LightKind::Point => (DVec3::Z, 30.0, 45.0, 0.0),
+            LightKind::Spot {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            }
+            | LightKind::Cylinder {
+                point_at,
+                radius,
+                falloff,
+                tightness,
+            } => (point_at, radius, falloff, tightness),
+            LightKind::Parallel { point_at } => (point_at, 30.0, 45.0, 0.0),
+        };
+        LightDraft {
+            spot: matches!(light.kind, LightKind::Spot { .. }),
+            parallel: matches!(light.kind, LightKind::Parallel { .. }),
+            cylinder: matches!(light.kind, LightKind::Cylinder { .. }),
+            light,
+            area: (has_area, pending),
+            point_at,
+            radius,
+            falloff,
+            tightness,
         }
-        self.block_end(open, "global_settings")
+    }
+
+    /// Writes the kind and area light read so far into the light.
+    fn settle(&mut self) {
+        self.light.kind = kind_of(
+            self.spot,
+            self.parallel,
+            self.cylinder,
+            self.point_at,
+            self.radius,
+            self.falloff,
+            self.tightness,
+        );
+        let (has_area, pending) = self.area;
+        self.light.area = has_area.then_some(pending);
+    }
+
+    /// Transforms the light, keeping the spotlight target in its kind while doing so.
+    fn transform(&mut self, t: &crate::scene::Transform) {
+        self.settle();
+        transform_light(&mut self.light, t);
+        if let Some(a) = self.light.area {
+            self.area.1 = a;
+        }
+        self.point_at = match self.light.kind {
+            LightKind::Spot { point_at, .. }
+            | LightKind::Cylinder { point_at, .. }
+            | LightKind::Parallel { point_at } => point_at,
+            LightKind::Point => t.point(self.point_at),
+        };
+    }
+
+    fn finish(mut self) -> Light {
+        self.settle();
+        self.light
     }
 }
 

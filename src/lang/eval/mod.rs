@@ -8,11 +8,12 @@
 //! way; everything above that level (expressions, objects, textures) just reads tokens.
 //!
 //! Files: `stream` (frames, scopes, limits), `directives` (`#declare`, flow control, macros,
-//! includes), `expr` (expressions and built-in functions), `items` (camera, lights, global
+//! includes), `expr` (expressions), `functions` (the table of built-in functions), `items` (camera, lights, global
 //! settings), `objects` (shapes, CSG, modifiers), `texture` (pigment, finish, texture).
 
 mod directives;
 mod expr;
+mod functions;
 mod items;
 mod keywords;
 mod objects;

@@ -12,28 +12,60 @@ use crate::scene::{Interior, Object, Shape, Transform};
 
 type R<T> = Result<T, Diagnostic>;
 
+/// What reading a shape's own items (before its modifiers) gave.
+enum ShapeRead {
+    Kept(Box<ObjectValue>),
+    /// POV-Ray drops the shape with a warning; its modifiers are still read.
+    Dropped,
+    /// `--skip-unsupported` left the whole object out, closing brace and all.
+    Skipped,
+}
+
+/// Reads a shape's items after its `{`, given its keyword.
+type ShapeReader = fn(&mut Evaluator<'_>, &Token) -> R<ShapeRead>;
+
+fn kept(o: ObjectValue) -> R<ShapeRead> {
+    Ok(ShapeRead::Kept(Box::new(o)))
+}
+
+/// Every keyword that starts an object, with its reader: the one list both "is this an
+/// object?" and the reading itself use.
+const SHAPES: &[(&str, ShapeReader)] = &[
+    ("sphere", |ev, _| kept(ev.sphere()?)),
+    ("plane", |ev, _| kept(ev.plane()?)),
+    ("box", |ev, _| kept(ev.box_shape()?)),
+    ("union", |ev, kw| {
+        kept(ev.csg_children(&the(kw), Shape::Union)?)
+    }),
+    ("object", |ev, _| ev.object_reference()),
+    ("cylinder", |ev, kw| kept(ev.cylinder(kw)?)),
+    ("cone", |ev, kw| kept(ev.cone(kw)?)),
+    ("disc", |ev, _| ev.disc()),
+    ("torus", |ev, _| kept(ev.torus()?)),
+    ("quadric", |ev, _| kept(ev.quadric()?)),
+    ("quartic", |ev, _| kept(ev.quartic()?)),
+    ("triangle", |ev, kw| ev.triangle(kw, false)),
+    ("smooth_triangle", |ev, kw| ev.triangle(kw, true)),
+    ("mesh", |ev, kw| kept(ev.mesh_items(kw)?)),
+    ("polygon", |ev, kw| kept(ev.polygon_items(kw)?)),
+    ("merge", |ev, kw| {
+        kept(ev.csg_children(&the(kw), Shape::Merge)?)
+    }),
+    ("intersection", |ev, kw| {
+        kept(ev.csg_children(&the(kw), Shape::Intersection)?)
+    }),
+    ("difference", |ev, kw| {
+        kept(ev.csg_children(&the(kw), Shape::Difference)?)
+    }),
+];
+
+/// "the sphere": how errors name the block a keyword opened.
+fn the(kw: &Token) -> String {
+    format!("the {}", kw.ident().unwrap_or(""))
+}
+
 pub fn is_object_keyword(word: &str) -> bool {
-    matches!(
-        word,
-        "sphere"
-            | "plane"
-            | "box"
-            | "union"
-            | "object"
-            | "cylinder"
-            | "cone"
-            | "disc"
-            | "torus"
-            | "quadric"
-            | "quartic"
-            | "triangle"
-            | "smooth_triangle"
-            | "mesh"
-            | "polygon"
-            | "merge"
-            | "intersection"
-            | "difference"
-    )
+    SHAPES.iter().any(|(name, _)| *name == word)
 }
 
 /// Shapes and CSG kinds POV-Ray has that the scene model does not (yet).
@@ -67,215 +99,18 @@ impl Evaluator<'_> {
         let kw = self.peek()?;
         let word = kw.ident().unwrap_or("").to_string();
         let open = self.block_start(&word)?;
-        let what = format!("the {word}");
+        let what = the(&kw);
         self.count_objects(1, kw.span)?;
-        // A shape POV-Ray drops with a warning still has its modifiers read.
-        let mut dropped = false;
-        let mut o = match word.as_str() {
-            "sphere" => {
-                let center = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let (v, s) = self.expr()?;
-                let radius = self.to_float(&v, s)?;
-                shape(Shape::Sphere { center, radius })
-            }
-            "plane" => {
-                let (v, s) = self.expr()?;
-                let normal = self.to_vec3(&v, s)?;
-                let len = normal.length();
-                if len == 0.0 || !len.is_finite() {
-                    return Err(self.err(s, "the plane's normal has zero length"));
-                }
-                self.eat(Punct::Comma)?;
-                let distance = self.float()?;
-                // POV-Ray normalises the normal and keeps the distance as written.
-                shape(Shape::Plane {
-                    normal: normal / len,
-                    distance,
-                })
-            }
-            "box" => {
-                let corner1 = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let corner2 = self.vector3()?;
-                shape(Shape::Box { corner1, corner2 })
-            }
-            "union" => self.csg_children(&what, Shape::Union)?,
-            "merge" => self.csg_children(&what, Shape::Merge)?,
-            "intersection" => self.csg_children(&what, Shape::Intersection)?,
-            "difference" => self.csg_children(&what, Shape::Difference)?,
-            "cylinder" => {
-                let base = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let cap = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let radius = self.float()?;
-                if (cap - base).length() < 1e-9 {
-                    return Err(self.err(
-                        kw.span,
-                        "degenerate cylinder: the base point equals the cap point",
-                    ));
-                }
-                shape(Shape::Cylinder {
-                    base,
-                    cap,
-                    radius,
-                    open: false,
-                })
-            }
-            "cone" => {
-                let base = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let base_radius = self.float()?;
-                self.eat(Punct::Comma)?;
-                let cap = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let cap_radius = self.float()?;
-                if (cap - base).length() < 1e-9 {
-                    return Err(self.err(
-                        kw.span,
-                        "degenerate cone: the base point equals the cap point",
-                    ));
-                }
-                shape(Shape::Cone {
-                    base,
-                    base_radius,
-                    cap,
-                    cap_radius,
-                    open: false,
-                })
-            }
-            "disc" => {
-                let center = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let (v, s) = self.expr()?;
-                let normal = self.to_vec3(&v, s)?;
-                self.eat(Punct::Comma)?;
-                let radius = self.float()?;
-                let hole_radius = if self.eat(Punct::Comma)? {
-                    self.float()?
-                } else {
-                    0.0
-                };
-                let len = normal.length();
-                if len < 1e-12 || !len.is_finite() {
-                    // POV-Ray accepts it and shows nothing; say so and leave it out.
-                    self.warn(s, "the disc's normal has zero length; the disc is left out");
-                    dropped = true;
-                    shape(Shape::Union(Vec::new()))
-                } else {
-                    shape(Shape::Disc {
-                        center,
-                        normal: normal / len,
-                        radius,
-                        hole_radius,
-                    })
-                }
-            }
-            "torus" => {
-                let major = self.float()?;
-                self.eat(Punct::Comma)?;
-                let minor = self.float()?;
-                shape(Shape::Torus { major, minor })
-            }
-            "quadric" => {
-                let abc = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let def = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let ghi = self.vector3()?;
-                self.eat(Punct::Comma)?;
-                let j = self.float()?;
-                shape(Shape::Quadric {
-                    coefficients: [
-                        abc.x, abc.y, abc.z, def.x, def.y, def.z, ghi.x, ghi.y, ghi.z, j,
-                    ],
-                })
-            }
-            "quartic" => {
-                // `quartic { <a0, ..., a34> }`: 35 coefficients, too many for a vector value.
-                self.expect(Punct::Lt, "to open the quartic's 35 coefficients")?;
-                let mut coefficients = Vec::with_capacity(35);
-                for i in 0..35 {
-                    if i > 0 {
-                        self.eat(Punct::Comma)?;
-                    }
-                    let (v, sp) = self.additive()?;
-                    coefficients.push(self.to_float(&v, sp)?);
-                }
-                self.expect(Punct::Gt, "after the quartic's 35 coefficients")?;
-                shape(Shape::Quartic { coefficients })
-            }
-            "triangle" | "smooth_triangle" => {
-                let (tri, degenerate) = self.triangle_items(word == "smooth_triangle")?;
-                if degenerate {
-                    // As POV-Ray: a warning, and the triangle is dropped.
-                    self.warn(kw.span, "degenerate triangle; it is left out");
-                    dropped = true;
-                    shape(Shape::Union(Vec::new()))
-                } else {
-                    shape(match tri.normals {
-                        Some(normals) => Shape::SmoothTriangle {
-                            corners: tri.corners,
-                            normals,
-                        },
-                        None => Shape::Triangle {
-                            corners: tri.corners,
-                        },
-                    })
-                }
-            }
-            "mesh" => self.mesh_items(&kw)?,
-            "polygon" => self.polygon_items(&kw)?,
-            _ => {
-                // `object { Name ... }`
-                if self.skip_unsupported
-                    && let Some(raw) = self.raw_peek(0).cloned()
-                    && let Some(Value::Unsupported(d)) = raw.ident().and_then(|n| self.lookup(n))
-                {
-                    // Leave the whole object out: the rest of its block, its brace.
-                    let message = format!("{}; the object is left out", d.message);
-                    self.warn(raw.span, message);
-                    self.skip_rest_of_block()?;
-                    self.leave();
-                    return Ok(ObjectValue::default());
-                }
-                let tok = self.peek()?;
-                match tok.ident().and_then(|n| self.lookup(n)).cloned() {
-                    Some(Value::Object(o)) => {
-                        self.next()?;
-                        *o
-                    }
-                    // `object { Shapes[i] }`
-                    Some(Value::Array(_)) => match self.expr()? {
-                        (Value::Object(o), _) => *o,
-                        (Value::Unsupported(d), s) => return Err(self.err(s, d.message.clone())),
-                        (other, s) => {
-                            return Err(self.err(
-                                s,
-                                format!("expected an object, found {}", other.kind_name()),
-                            ));
-                        }
-                    },
-                    Some(other) => {
-                        return Err(self.err(
-                            tok.span,
-                            format!("expected an object identifier, found {}", other.kind_name()),
-                        ));
-                    }
-                    None => {
-                        if is_object_keyword(tok.ident().unwrap_or("")) {
-                            self.object()?
-                        } else if let Some(w) = tok.ident() {
-                            if is_known_unsupported_shape(w) {
-                                return Err(self.unsupported(&tok, w));
-                            }
-                            return Err(self.unknown_identifier(&tok, w));
-                        } else {
-                            return Err(self.expected("an object identifier", &tok));
-                        }
-                    }
-                }
+        let read = match SHAPES.iter().find(|(name, _)| *name == word) {
+            Some((_, reader)) => reader(self, &kw)?,
+            None => self.object_reference()?,
+        };
+        let (mut o, dropped) = match read {
+            ShapeRead::Kept(o) => (*o, false),
+            ShapeRead::Dropped => (shape(Shape::Union(Vec::new())), true),
+            ShapeRead::Skipped => {
+                self.leave();
+                return Ok(ObjectValue::default());
             }
         };
         self.modifiers(&mut o, &what)?;
@@ -288,6 +123,207 @@ impl Evaluator<'_> {
             return Ok(ObjectValue::default());
         }
         Ok(o)
+    }
+
+    fn sphere(&mut self) -> R<ObjectValue> {
+        let center = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let (v, s) = self.expr()?;
+        let radius = self.to_float(&v, s)?;
+        Ok(shape(Shape::Sphere { center, radius }))
+    }
+
+    fn plane(&mut self) -> R<ObjectValue> {
+        let (v, s) = self.expr()?;
+        let normal = self.to_vec3(&v, s)?;
+        let len = normal.length();
+        if len == 0.0 || !len.is_finite() {
+            return Err(self.err(s, "the plane's normal has zero length"));
+        }
+        self.eat(Punct::Comma)?;
+        let distance = self.float()?;
+        // POV-Ray normalises the normal and keeps the distance as written.
+        Ok(shape(Shape::Plane {
+            normal: normal / len,
+            distance,
+        }))
+    }
+
+    fn box_shape(&mut self) -> R<ObjectValue> {
+        let corner1 = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let corner2 = self.vector3()?;
+        Ok(shape(Shape::Box { corner1, corner2 }))
+    }
+
+    fn cylinder(&mut self, kw: &Token) -> R<ObjectValue> {
+        let base = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let cap = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let radius = self.float()?;
+        if (cap - base).length() < 1e-9 {
+            return Err(self.err(
+                kw.span,
+                "degenerate cylinder: the base point equals the cap point",
+            ));
+        }
+        Ok(shape(Shape::Cylinder {
+            base,
+            cap,
+            radius,
+            open: false,
+        }))
+    }
+
+    fn cone(&mut self, kw: &Token) -> R<ObjectValue> {
+        let base = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let base_radius = self.float()?;
+        self.eat(Punct::Comma)?;
+        let cap = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let cap_radius = self.float()?;
+        if (cap - base).length() < 1e-9 {
+            return Err(self.err(
+                kw.span,
+                "degenerate cone: the base point equals the cap point",
+            ));
+        }
+        Ok(shape(Shape::Cone {
+            base,
+            base_radius,
+            cap,
+            cap_radius,
+            open: false,
+        }))
+    }
+
+    fn disc(&mut self) -> R<ShapeRead> {
+        let center = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let (v, s) = self.expr()?;
+        let normal = self.to_vec3(&v, s)?;
+        self.eat(Punct::Comma)?;
+        let radius = self.float()?;
+        let hole_radius = if self.eat(Punct::Comma)? {
+            self.float()?
+        } else {
+            0.0
+        };
+        let len = normal.length();
+        if len < 1e-12 || !len.is_finite() {
+            // POV-Ray accepts it and shows nothing; say so and leave it out.
+            self.warn(s, "the disc's normal has zero length; the disc is left out");
+            return Ok(ShapeRead::Dropped);
+        }
+        kept(shape(Shape::Disc {
+            center,
+            normal: normal / len,
+            radius,
+            hole_radius,
+        }))
+    }
+
+    fn torus(&mut self) -> R<ObjectValue> {
+        let major = self.float()?;
+        self.eat(Punct::Comma)?;
+        let minor = self.float()?;
+        Ok(shape(Shape::Torus { major, minor }))
+    }
+
+    fn quadric(&mut self) -> R<ObjectValue> {
+        let abc = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let def = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let ghi = self.vector3()?;
+        self.eat(Punct::Comma)?;
+        let j = self.float()?;
+        Ok(shape(Shape::Quadric {
+            coefficients: [
+                abc.x, abc.y, abc.z, def.x, def.y, def.z, ghi.x, ghi.y, ghi.z, j,
+            ],
+        }))
+    }
+
+    /// `quartic { <a0, ..., a34> }`: 35 coefficients, too many for a vector value.
+    fn quartic(&mut self) -> R<ObjectValue> {
+        self.expect(Punct::Lt, "to open the quartic's 35 coefficients")?;
+        let mut coefficients = Vec::with_capacity(35);
+        for i in 0..35 {
+            if i > 0 {
+                self.eat(Punct::Comma)?;
+            }
+            let (v, sp) = self.additive()?;
+            coefficients.push(self.to_float(&v, sp)?);
+        }
+        self.expect(Punct::Gt, "after the quartic's 35 coefficients")?;
+        Ok(shape(Shape::Quartic { coefficients }))
+    }
+
+    fn triangle(&mut self, kw: &Token, smooth: bool) -> R<ShapeRead> {
+        let (tri, degenerate) = self.triangle_items(smooth)?;
+        if degenerate {
+            // As POV-Ray: a warning, and the triangle is dropped.
+            self.warn(kw.span, "degenerate triangle; it is left out");
+            return Ok(ShapeRead::Dropped);
+        }
+        kept(shape(match tri.normals {
+            Some(normals) => Shape::SmoothTriangle {
+                corners: tri.corners,
+                normals,
+            },
+            None => Shape::Triangle {
+                corners: tri.corners,
+            },
+        }))
+    }
+
+    /// `object { Name ... }`, `object { Shapes[i] ... }` or `object { sphere {...} ... }`.
+    fn object_reference(&mut self) -> R<ShapeRead> {
+        if self.skip_unsupported
+            && let Some(raw) = self.raw_peek(0).cloned()
+            && let Some(Value::Unsupported(d)) = raw.ident().and_then(|n| self.lookup(n))
+        {
+            // Leave the whole object out: the rest of its block, its brace.
+            let message = format!("{}; the object is left out", d.message);
+            self.warn(raw.span, message);
+            self.skip_rest_of_block()?;
+            return Ok(ShapeRead::Skipped);
+        }
+        let tok = self.peek()?;
+        match tok.ident().and_then(|n| self.lookup(n)).cloned() {
+            Some(Value::Object(o)) => {
+                self.next()?;
+                Ok(ShapeRead::Kept(o))
+            }
+            // `object { Shapes[i] }`
+            Some(Value::Array(_)) => match self.expr()? {
+                (Value::Object(o), _) => Ok(ShapeRead::Kept(o)),
+                (Value::Unsupported(d), s) => Err(self.err(s, d.message.clone())),
+                (other, s) => Err(self.err(
+                    s,
+                    format!("expected an object, found {}", other.kind_name()),
+                )),
+            },
+            Some(other) => Err(self.err(
+                tok.span,
+                format!("expected an object identifier, found {}", other.kind_name()),
+            )),
+            None => {
+                if is_object_keyword(tok.ident().unwrap_or("")) {
+                    kept(self.object()?)
+                } else if let Some(w) = tok.ident() {
+                    if is_known_unsupported_shape(w) {
+                        return Err(self.unsupported(&tok, w));
+                    }
+                    Err(self.unknown_identifier(&tok, w))
+                } else {
+                    Err(self.expected("an object identifier", &tok))
+                }
+            }
+        }
     }
 
     /// Children of a CSG block; lights inside it are kept beside the shape so later
@@ -348,100 +384,120 @@ impl Evaluator<'_> {
             let Some(object) = o.object.as_mut() else {
                 return Err(self.stray_in_block(&tok, what));
             };
-            match word.as_str() {
-                "pigment" => {
-                    self.next()?;
-                    let mut texture = object
-                        .texture
-                        .take()
-                        .unwrap_or_else(|| self.default_texture.clone());
-                    texture.pigment = self.pigment_body(texture.pigment)?;
-                    object.texture = Some(texture);
-                }
-                "finish" => {
-                    self.next()?;
-                    let mut texture = object
-                        .texture
-                        .take()
-                        .unwrap_or_else(|| self.default_texture.clone());
-                    texture.finish = self.finish_body(texture.finish)?;
-                    object.texture = Some(texture);
-                }
+            let known = match word.as_str() {
                 "texture" => {
                     textures += 1;
                     self.next()?;
                     let top = self.texture_body(self.default_texture.clone())?;
+                    // A second `texture` layers over the first; the first replaces the default.
                     let below = if textures > 1 {
                         object.texture.take()
                     } else {
                         None
                     };
                     object.texture = Some(Self::layer_texture(below, top));
-                }
-                "normal" => {
-                    self.next()?;
-                    let mut texture = object
-                        .texture
-                        .take()
-                        .unwrap_or_else(|| self.default_texture.clone());
-                    texture.normal = self.normal_body(texture.normal.take())?;
-                    object.texture = Some(texture);
-                }
-                "interior" => {
-                    self.next()?;
-                    let base = object.interior.unwrap_or_default();
-                    object.interior = Some(self.interior_body(base)?);
-                }
-                "no_shadow" => flag(self, &mut object.flags.no_shadow)?,
-                "no_image" => flag(self, &mut object.flags.no_image)?,
-                "no_reflection" => flag(self, &mut object.flags.no_reflection)?,
-                "double_illuminate" => flag(self, &mut object.flags.double_illuminate)?,
-                "hollow" => {
-                    self.next()?;
-                    object.flags.hollow = self.optional_bool()?;
-                }
-                "inverse" => {
-                    self.next()?;
-                    object.flags.inverse = !object.flags.inverse;
-                }
-                "open" => {
-                    self.next()?;
-                    match &mut object.shape {
-                        Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
-                        _ => self.warn(tok.span, "`open` only applies to cylinders and cones"),
-                    }
-                }
-                // Root solving is exact enough in penumbra without it.
-                "sturm" => {
-                    self.next()?;
-                    self.optional_bool()?;
+                    true
                 }
                 "clipped_by" => {
                     self.next()?;
                     let clips = self.object_list("clipped_by", "bounded_by", &bounds)?;
                     object.clipped_by.extend(clips.iter().cloned());
                     clipped = clips;
+                    true
                 }
                 // Bounds only speed POV-Ray up; penumbra builds its own, so they are read and
                 // kept only for `clipped_by { bounded_by }`.
                 "bounded_by" => {
                     self.next()?;
                     bounds = self.object_list("bounded_by", "clipped_by", &clipped)?;
+                    true
                 }
-                "material" => {
-                    self.next()?;
-                    self.material_body(object)?;
-                }
-                "split_union" | "cutaway_textures" => {
-                    self.next()?;
-                    self.optional_bool()?;
-                }
-                "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
-                    self.unsupported_or_skip(&tok, &word)?
-                }
-                _ => return Err(self.stray_in_block(&tok, what)),
+                w => self.appearance_modifier(object, w)? || self.flag_modifier(object, &tok, w)?,
+            };
+            if !known {
+                return Err(self.stray_in_block(&tok, what));
             }
         }
+    }
+
+    /// `pigment`, `finish`, `normal`, `interior`, `material`; false for other words.
+    fn appearance_modifier(&mut self, object: &mut Object, word: &str) -> R<bool> {
+        match word {
+            "pigment" => self.edit_texture(object, |ev, mut t| {
+                t.pigment = ev.pigment_body(t.pigment)?;
+                Ok(t)
+            })?,
+            "finish" => self.edit_texture(object, |ev, mut t| {
+                t.finish = ev.finish_body(t.finish)?;
+                Ok(t)
+            })?,
+            "normal" => self.edit_texture(object, |ev, mut t| {
+                t.normal = ev.normal_body(t.normal.take())?;
+                Ok(t)
+            })?,
+            "interior" => {
+                self.next()?;
+                let base = object.interior.unwrap_or_default();
+                object.interior = Some(self.interior_body(base)?);
+            }
+            "material" => {
+                self.next()?;
+                self.material_body(object)?;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// A texture item outside a `texture` block changes the object's texture, or the
+    /// default texture when the object has none yet.
+    fn edit_texture(
+        &mut self,
+        object: &mut Object,
+        edit: impl FnOnce(&mut Self, crate::scene::Texture) -> R<crate::scene::Texture>,
+    ) -> R<()> {
+        self.next()?;
+        let texture = object
+            .texture
+            .take()
+            .unwrap_or_else(|| self.default_texture.clone());
+        object.texture = Some(edit(self, texture)?);
+        Ok(())
+    }
+
+    /// Object flags, and keywords read but without effect; false for other words.
+    fn flag_modifier(&mut self, object: &mut Object, tok: &Token, word: &str) -> R<bool> {
+        match word {
+            "no_shadow" => flag(self, &mut object.flags.no_shadow)?,
+            "no_image" => flag(self, &mut object.flags.no_image)?,
+            "no_reflection" => flag(self, &mut object.flags.no_reflection)?,
+            "double_illuminate" => flag(self, &mut object.flags.double_illuminate)?,
+            "hollow" => {
+                self.next()?;
+                object.flags.hollow = self.optional_bool()?;
+            }
+            "inverse" => {
+                self.next()?;
+                object.flags.inverse = !object.flags.inverse;
+            }
+            "open" => {
+                self.next()?;
+                match &mut object.shape {
+                    Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
+                    _ => self.warn(tok.span, "`open` only applies to cylinders and cones"),
+                }
+            }
+            // Root solving is exact enough in penumbra without `sturm`.
+            "sturm" | "split_union" | "cutaway_textures" => {
+                self.next()?;
+                self.optional_bool()?;
+            }
+            "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
+                self.unsupported_or_skip(tok, word)?;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
     }
 
     /// `translate`, `rotate`, `scale`, `matrix`, `transform`: the transform, if the next
@@ -534,76 +590,58 @@ impl Evaluator<'_> {
     }
 
     fn transform_block_open(&mut self) -> R<Transform> {
-        let open = self.expect(Punct::LBrace, "after `transform`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Transform> {
-            let mut t = Transform::IDENTITY;
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(t);
-                }
+        self.block_items(
+            "transform",
+            "the transform",
+            Transform::IDENTITY,
+            |ev, tok, t| {
                 if tok.is_ident("inverse") {
-                    self.next()?;
-                    t = t.inverted();
-                    continue;
+                    ev.next()?;
+                    *t = t.inverted();
+                    return Ok(());
                 }
                 if let Some(Value::Transform(named)) =
-                    tok.ident().and_then(|n| self.lookup(n)).cloned()
+                    tok.ident().and_then(|n| ev.lookup(n)).cloned()
                 {
-                    self.next()?;
-                    t = t.then(&named);
-                    continue;
+                    ev.next()?;
+                    *t = t.then(&named);
+                    return Ok(());
                 }
-                match self.transform_modifier()? {
-                    Some(step) => t = t.then(&step),
-                    None => return Err(self.stray_in_block(&tok, "the transform")),
+                match ev.transform_modifier()? {
+                    Some(step) => *t = t.then(&step),
+                    None => return Err(ev.stray_in_block(tok, "the transform")),
                 }
-            }
-        })();
-        self.leave();
-        let t = r?;
-        self.expect(Punct::RBrace, "to close the transform")?;
-        Ok(t)
+                Ok(())
+            },
+        )
     }
 
-    pub(super) fn interior_body(&mut self, mut interior: Interior) -> R<Interior> {
-        let open = self.expect(Punct::LBrace, "after `interior`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Interior> {
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(interior);
+    pub(super) fn interior_body(&mut self, interior: Interior) -> R<Interior> {
+        self.block_items("interior", "the interior", interior, |ev, tok, interior| {
+            match tok.ident() {
+                Some("ior") => {
+                    ev.next()?;
+                    interior.ior = ev.float()?;
                 }
-                match tok.ident() {
-                    Some("ior") => {
-                        self.next()?;
-                        interior.ior = self.float()?;
+                Some(n) if matches!(ev.lookup(n), Some(Value::Interior(_))) => {
+                    if let Some(Value::Interior(i)) = ev.lookup(n).cloned() {
+                        *interior = i;
                     }
-                    Some(n) if matches!(self.lookup(n), Some(Value::Interior(_))) => {
-                        if let Some(Value::Interior(i)) = self.lookup(n).cloned() {
-                            interior = i;
-                        }
-                        self.next()?;
-                    }
-                    Some(w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour")) => {
-                        let w = w.to_string();
-                        self.next()?;
-                        self.interior_fade_item(&w, &mut interior)?;
-                    }
-                    Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
-                        let w = w.to_string();
-                        self.unsupported_or_skip(&tok, &w)?;
-                    }
-                    _ => return Err(self.stray_in_block(&tok, "the interior")),
+                    ev.next()?;
                 }
+                Some(w @ ("fade_distance" | "fade_power" | "fade_color" | "fade_colour")) => {
+                    let w = w.to_string();
+                    ev.next()?;
+                    ev.interior_fade_item(&w, interior)?;
+                }
+                Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
+                    let w = w.to_string();
+                    ev.unsupported_or_skip(tok, &w)?;
+                }
+                _ => return Err(ev.stray_in_block(tok, "the interior")),
             }
-        })();
-        self.leave();
-        let i = r?;
-        self.expect(Punct::RBrace, "to close the interior")?;
-        Ok(i)
+            Ok(())
+        })
     }
 }
 
@@ -734,90 +772,67 @@ impl Evaluator<'_> {
     /// `{ objects }` after `clipped_by` or `bounded_by`; `{ other }` (the other keyword
     /// alone) means the objects given to the other one.
     fn object_list(&mut self, what: &str, other: &str, others: &[Object]) -> R<Vec<Object>> {
-        let open = self.expect(Punct::LBrace, &format!("after `{what}`"))?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<Object>> {
-            let mut out = Vec::new();
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(out);
-                }
-                if tok.is_ident(other) {
-                    self.next()?;
-                    out.extend(others.iter().cloned());
-                    continue;
-                }
-                match tok.ident() {
-                    Some(w) if is_object_keyword(w) => {
-                        let o = self.object()?;
-                        out.extend(o.object);
-                    }
-                    Some(w) if is_known_unsupported_shape(w) && self.lookup(w).is_none() => {
-                        let w = w.to_string();
-                        self.unsupported_or_skip(&tok, &w)?;
-                    }
-                    _ => return Err(self.stray_in_block(&tok, &format!("`{what}`"))),
-                }
+        let close = format!("`{what}`");
+        self.block_items(what, &close, Vec::new(), |ev, tok, out| {
+            if tok.is_ident(other) {
+                ev.next()?;
+                out.extend(others.iter().cloned());
+                return Ok(());
             }
-        })();
-        self.leave();
-        let out = r?;
-        self.expect(Punct::RBrace, &format!("to close `{what}`"))?;
-        Ok(out)
+            match tok.ident() {
+                Some(w) if is_object_keyword(w) => {
+                    let o = ev.object()?;
+                    out.extend(o.object);
+                }
+                Some(w) if is_known_unsupported_shape(w) && ev.lookup(w).is_none() => {
+                    let w = w.to_string();
+                    ev.unsupported_or_skip(tok, &w)?;
+                }
+                _ => return Err(ev.stray_in_block(tok, &close)),
+            }
+            Ok(())
+        })
     }
 
     /// `material { [Name] texture {...} interior {...} transforms }`.
     pub(super) fn material_body(&mut self, object: &mut Object) -> R<()> {
-        let open = self.expect(Punct::LBrace, "after `material`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<()> {
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(());
+        self.block_items("material", "the material", (), |ev, tok, ()| {
+            match tok.ident() {
+                Some("texture") => {
+                    ev.next()?;
+                    object.texture = Some(ev.texture_body(ev.default_texture.clone())?);
                 }
-                match tok.ident() {
-                    Some("texture") => {
-                        self.next()?;
-                        object.texture = Some(self.texture_body(self.default_texture.clone())?);
-                    }
-                    Some("interior") => {
-                        self.next()?;
-                        let base = object.interior.unwrap_or_default();
-                        object.interior = Some(self.interior_body(base)?);
-                    }
-                    Some(n)
-                        if matches!(self.lookup(n), Some(Value::Material(_) | Value::Array(_))) =>
-                    {
-                        // A material identifier, or an element of an array of them.
-                        let (v, s) = self.expr()?;
-                        let Value::Material(m) = v else {
-                            return Err(self
-                                .err(s, format!("expected a material, found {}", v.kind_name())));
-                        };
-                        if m.0.is_some() {
-                            object.texture = m.0;
-                        }
-                        if m.1.is_some() {
-                            object.interior = m.1;
-                        }
-                    }
-                    _ => match self.transform_modifier()? {
-                        Some(t) => {
-                            if let Some(texture) = &mut object.texture {
-                                texture.transform_by(&t);
-                            }
-                        }
-                        None => return Err(self.stray_in_block(&tok, "the material")),
-                    },
+                Some("interior") => {
+                    ev.next()?;
+                    let base = object.interior.unwrap_or_default();
+                    object.interior = Some(ev.interior_body(base)?);
                 }
+                Some(n) if matches!(ev.lookup(n), Some(Value::Material(_) | Value::Array(_))) => {
+                    // A material identifier, or an element of an array of them.
+                    let (v, s) = ev.expr()?;
+                    let Value::Material(m) = v else {
+                        return Err(
+                            ev.err(s, format!("expected a material, found {}", v.kind_name()))
+                        );
+                    };
+                    if m.0.is_some() {
+                        object.texture = m.0;
+                    }
+                    if m.1.is_some() {
+                        object.interior = m.1;
+                    }
+                }
+                _ => match ev.transform_modifier()? {
+                    Some(t) => {
+                        if let Some(texture) = &mut object.texture {
+                            texture.transform_by(&t);
+                        }
+                    }
+                    None => return Err(ev.stray_in_block(tok, "the material")),
+                },
             }
-        })();
-        self.leave();
-        r?;
-        self.expect(Punct::RBrace, "to close the material")?;
-        Ok(())
+            Ok(())
+        })
     }
 }
 

@@ -69,6 +69,110 @@ const PATTERNS: &[&str] = &[
 ];
 
 /// What a pattern block holds while it is read: the pattern and where its modifiers go.
+/// `albedo` forms of `diffuse`, `phong` and `specular`: they depend on `brilliance`,
+/// `phong_size` and `roughness`, which may come later in the block, so they are resolved
+/// at its end.
+#[derive(Default)]
+struct Albedos {
+    diffuse: Option<f64>,
+    phong: Option<f64>,
+    specular: Option<f64>,
+}
+
+impl Albedos {
+    fn resolve(&self, f: &mut Finish) {
+        if let Some(k) = self.diffuse {
+            f.diffuse = k * (f.brilliance + 1.0) / 2.0;
+        }
+        if let Some(p) = self.phong {
+            f.phong = p * (f.phong_size + 1.0) / 2.0;
+        }
+        if let Some(s) = self.specular {
+            let e = 1.0 / f.roughness;
+            f.specular = s * (e + 2.0) / (4.0 * (2.0 - 2f64.powf(-e / 2.0)));
+        }
+    }
+}
+
+/// Reads one pattern item (after its keyword) into the pattern.
+type PatternItem = fn(&mut Evaluator<'_>, &mut Pattern) -> R<()>;
+
+fn turbulence(p: &mut Pattern) -> &mut Turbulence {
+    p.turbulence.get_or_insert_with(Turbulence::default)
+}
+
+fn set_wave(p: &mut Pattern, wave: Wave) -> R<()> {
+    p.wave = wave;
+    Ok(())
+}
+
+/// The items every pattern takes (`warp` aside, which also moves the pattern's transform).
+const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
+    ("frequency", |ev, p| {
+        p.frequency = ev.float()?;
+        Ok(())
+    }),
+    ("phase", |ev, p| {
+        p.phase = ev.float()?;
+        Ok(())
+    }),
+    ("ramp_wave", |_, p| set_wave(p, Wave::Ramp)),
+    ("sine_wave", |_, p| set_wave(p, Wave::Sine)),
+    ("triangle_wave", |_, p| set_wave(p, Wave::Triangle)),
+    ("scallop_wave", |_, p| set_wave(p, Wave::Scallop)),
+    ("cubic_wave", |_, p| set_wave(p, Wave::Cubic)),
+    ("poly_wave", |ev, p| {
+        let e = if ev.starts_float()? { ev.float()? } else { 1.0 };
+        set_wave(p, Wave::Poly(e))
+    }),
+    ("turbulence", |ev, p| {
+        let (v, s) = ev.expr()?;
+        let amount = ev.to_vec3(&v, s)?;
+        turbulence(p).amount = amount;
+        Ok(())
+    }),
+    ("octaves", |ev, p| {
+        let o = ev.float()?;
+        turbulence(p).octaves = o.clamp(1.0, 10.0) as u32;
+        Ok(())
+    }),
+    ("omega", |ev, p| {
+        let o = ev.float()?;
+        turbulence(p).omega = o;
+        Ok(())
+    }),
+    ("lambda", |ev, p| {
+        let l = ev.float()?;
+        turbulence(p).lambda = l;
+        Ok(())
+    }),
+    ("noise_generator", |ev, p| {
+        p.noise_generator = ev.float()?.clamp(1.0, 3.0) as u8;
+        Ok(())
+    }),
+    ("brick_size", |ev, p| {
+        let v = ev.vector3()?;
+        if let PatternKind::Brick { size, .. } = &mut p.kind {
+            *size = v;
+        }
+        Ok(())
+    }),
+    ("mortar", |ev, p| {
+        let m = ev.float()?;
+        if let PatternKind::Brick { mortar, .. } = &mut p.kind {
+            *mortar = m;
+        }
+        Ok(())
+    }),
+    ("agate_turb", |ev, p| {
+        let a = ev.float()?;
+        if let PatternKind::Agate { turbulence } = &mut p.kind {
+            *turbulence = a;
+        }
+        Ok(())
+    }),
+];
+
 enum Modified<'a> {
     Pigment(&'a mut Pigment),
     Normal(&'a mut Normal),
@@ -269,26 +373,8 @@ impl Evaluator<'_> {
     /// A pattern modifier (frequency, wave, turbulence, warp, brick size ...) applied to
     /// the pattern being read; false when the word is none.
     fn pattern_modifier(&mut self, target: Modified<'_>, word: &str) -> R<bool> {
-        const WORDS: &[&str] = &[
-            "frequency",
-            "phase",
-            "ramp_wave",
-            "sine_wave",
-            "triangle_wave",
-            "scallop_wave",
-            "cubic_wave",
-            "poly_wave",
-            "turbulence",
-            "octaves",
-            "omega",
-            "lambda",
-            "warp",
-            "noise_generator",
-            "brick_size",
-            "mortar",
-            "agate_turb",
-        ];
-        if !WORDS.contains(&word) {
+        let item = PATTERN_ITEMS.iter().find(|(name, _)| *name == word);
+        if item.is_none() && word != "warp" {
             return Ok(false);
         }
         let tok = self.next()?;
@@ -310,221 +396,162 @@ impl Evaluator<'_> {
                 }
             },
         };
+        // Without a pattern (a plain colour) the item is read and has no effect.
         let mut scratch = Pattern::new(PatternKind::Bozo);
         let pattern = pattern.unwrap_or(&mut scratch);
-        match word {
-            "frequency" => pattern.frequency = self.float()?,
-            "phase" => pattern.phase = self.float()?,
-            "ramp_wave" => pattern.wave = Wave::Ramp,
-            "sine_wave" => pattern.wave = Wave::Sine,
-            "triangle_wave" => pattern.wave = Wave::Triangle,
-            "scallop_wave" => pattern.wave = Wave::Scallop,
-            "cubic_wave" => pattern.wave = Wave::Cubic,
-            "poly_wave" => {
-                let e = if self.starts_float()? {
-                    self.float()?
-                } else {
-                    1.0
-                };
-                pattern.wave = Wave::Poly(e);
+        if let Some((_, read)) = item {
+            return read(self, pattern).map(|()| true);
+        }
+        // warp { turbulence ... }: transforms written before it are warped with the
+        // pattern, so they move into the warp chain.
+        if let Some(w) = self.warp_block()? {
+            if !transform.is_identity() {
+                pattern.warps.push(Warp::Transform(*transform));
+                *transform = Transform::IDENTITY;
             }
-            "turbulence" => {
-                let (v, s) = self.expr()?;
-                let amount = self.to_vec3(&v, s)?;
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .amount = amount;
-            }
-            "octaves" => {
-                let o = self.float()?;
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .octaves = o.clamp(1.0, 10.0) as u32;
-            }
-            "omega" => {
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .omega = self.float()?
-            }
-            "lambda" => {
-                pattern
-                    .turbulence
-                    .get_or_insert_with(Turbulence::default)
-                    .lambda = self.float()?
-            }
-            "noise_generator" => pattern.noise_generator = self.float()?.clamp(1.0, 3.0) as u8,
-            "brick_size" => {
-                let v = self.vector3()?;
-                if let PatternKind::Brick { size, .. } = &mut pattern.kind {
-                    *size = v;
-                }
-            }
-            "mortar" => {
-                let m = self.float()?;
-                if let PatternKind::Brick { mortar, .. } = &mut pattern.kind {
-                    *mortar = m;
-                }
-            }
-            "agate_turb" => {
-                let a = self.float()?;
-                if let PatternKind::Agate { turbulence } = &mut pattern.kind {
-                    *turbulence = a;
-                }
-            }
-            _ => {
-                // warp { turbulence ... }: transforms written before it are warped with
-                // the pattern, so they move into the warp chain.
-                let warp = self.warp_block()?;
-                if let Some(w) = warp {
-                    if !transform.is_identity() {
-                        pattern.warps.push(Warp::Transform(*transform));
-                        *transform = Transform::IDENTITY;
-                    }
-                    pattern.warps.push(w);
-                }
-            }
+            pattern.warps.push(w);
         }
         Ok(true)
     }
 
     /// `warp { turbulence v octaves n omega w lambda l }`; other warps are unsupported.
     fn warp_block(&mut self) -> R<Option<Warp>> {
-        let open = self.expect(Punct::LBrace, "after `warp`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Option<Warp>> {
-            let mut t = Turbulence::default();
-            let mut any = false;
-            loop {
-                let tok = self.peek()?;
-                if tok.is_punct(Punct::RBrace) {
-                    return Ok(any.then_some(Warp::Turbulence(t)));
+        let start = (Turbulence::default(), false);
+        let (t, any) = self.block_items("warp", "the warp", start, |ev, tok, (t, any)| {
+            match tok.ident() {
+                Some("turbulence") => {
+                    ev.next()?;
+                    let (v, s) = ev.expr()?;
+                    t.amount = ev.to_vec3(&v, s)?;
+                    *any = true;
                 }
-                match tok.ident() {
-                    Some("turbulence") => {
-                        self.next()?;
-                        let (v, s) = self.expr()?;
-                        t.amount = self.to_vec3(&v, s)?;
-                        any = true;
-                    }
-                    Some("octaves") => {
-                        self.next()?;
-                        t.octaves = self.float()?.clamp(1.0, 10.0) as u32;
-                    }
-                    Some("omega") => {
-                        self.next()?;
-                        t.omega = self.float()?;
-                    }
-                    Some("lambda") => {
-                        self.next()?;
-                        t.lambda = self.float()?;
-                    }
-                    Some(w) => {
-                        let w = w.to_string();
-                        return Err(self.unsupported(&tok, &format!("warp {{ {w} }}")));
-                    }
-                    None => return Err(self.stray_in_block(&tok, "the warp")),
+                Some("octaves") => {
+                    ev.next()?;
+                    t.octaves = ev.float()?.clamp(1.0, 10.0) as u32;
                 }
+                Some("omega") => {
+                    ev.next()?;
+                    t.omega = ev.float()?;
+                }
+                Some("lambda") => {
+                    ev.next()?;
+                    t.lambda = ev.float()?;
+                }
+                Some(w) => {
+                    let w = w.to_string();
+                    return Err(ev.unsupported(tok, &format!("warp {{ {w} }}")));
+                }
+                None => return Err(ev.stray_in_block(tok, "the warp")),
             }
-        })();
-        self.leave();
-        let w = r?;
-        self.expect(Punct::RBrace, "to close the warp")?;
-        Ok(w)
+            Ok(())
+        })?;
+        Ok(any.then_some(Warp::Turbulence(t)))
     }
 
     /// `{ [v colour] ... }` after `color_map`; entries sorted by value as POV-Ray keeps them.
     fn colour_map_body(&mut self) -> R<Vec<(f64, Colour)>> {
-        let open = self.expect(Punct::LBrace, "after `color_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Colour)>> {
-            let mut map = Vec::new();
-            // `color_map { Declared }`: a map declared earlier (kept as a pigment).
-            if let Some(Value::Pigment(named)) =
-                self.peek()?.ident().and_then(|w| self.lookup(w)).cloned()
-                && let PigmentKind::ColourMap { map: m, .. } = named.kind
-            {
-                self.next()?;
-                map = m;
-            }
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
+        self.read_map_entries(
+            "color_map",
+            "colour map",
+            Self::declared_colour_map_entries,
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
                 // The old form `[a, b colour c colour d]`: a second value before the colours.
-                if self.starts_float()? {
-                    let v2 = self.float()?;
-                    let (c1, _) = self.colour()?;
-                    self.eat(Punct::Comma)?;
-                    let (c2, _) = self.colour()?;
+                if ev.starts_float()? {
+                    let v2 = ev.float()?;
+                    let (c1, _) = ev.colour()?;
+                    ev.eat(Punct::Comma)?;
+                    let (c2, _) = ev.colour()?;
                     map.push((v, colour_of(c1)));
                     map.push((v2, colour_of(c2)));
                 } else {
-                    let (c, _) = self.colour()?;
+                    let (c, _) = ev.colour()?;
                     map.push((v, colour_of(c)));
                 }
-                self.expect(Punct::RBracket, "to close the colour map entry")?;
+                Ok(())
+            },
+        )
+    }
+
+    /// `color_map { Declared }`: a map declared earlier (kept as a pigment) starts the map.
+    fn declared_colour_map_entries(&mut self) -> R<Vec<(f64, Colour)>> {
+        if let Some(Value::Pigment(named)) =
+            self.peek()?.ident().and_then(|w| self.lookup(w)).cloned()
+            && let PigmentKind::ColourMap { map, .. } = named.kind
+        {
+            self.next()?;
+            return Ok(map);
+        }
+        Ok(Vec::new())
+    }
+
+    /// `{ [entry] ... }` after a map keyword, the same for every kind of map: `entry` reads
+    /// what is inside one `[ ]` into the map, which `start` begins.
+    fn read_map_entries<T>(
+        &mut self,
+        keyword: &str,
+        what: &str,
+        start: fn(&mut Self) -> R<Vec<T>>,
+        mut entry: impl FnMut(&mut Self, &mut Vec<T>) -> R<()>,
+    ) -> R<Vec<T>> {
+        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
+        self.enter(open.span)?;
+        let r = (|| -> R<Vec<T>> {
+            let mut map = start(self)?;
+            while self.eat(Punct::LBracket)? {
+                entry(self, &mut map)?;
+                self.expect(Punct::RBracket, &format!("to close the {what} entry"))?;
             }
             Ok(map)
         })();
         self.leave();
         let map = r?;
-        self.expect(Punct::RBrace, "to close the colour map")?;
+        self.expect(Punct::RBrace, &format!("to close the {what}"))?;
         Ok(map)
     }
 
     /// `{ [v pigment {...}] ... }` after `pigment_map`.
     fn pigment_map_body(&mut self) -> R<Vec<(f64, Pigment)>> {
-        let open = self.expect(Punct::LBrace, "after `pigment_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Pigment)>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
+        self.read_map_entries(
+            "pigment_map",
+            "pigment map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
                 // Entries are pigment bodies: `[0.5 checker rgb 1, rgb 0]`, `[1 Named]`.
-                let p = if self.peek()?.is_ident("pigment") {
-                    self.list_entry()?.unwrap_or_default()
+                let p = if ev.peek()?.is_ident("pigment") {
+                    ev.list_entry()?.unwrap_or_default()
                 } else {
-                    self.pigment_items(Pigment::default(), Punct::RBracket)?
+                    ev.pigment_items(Pigment::default(), Punct::RBracket)?
                 };
                 map.push((v, p));
-                self.expect(Punct::RBracket, "to close the pigment map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the pigment map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// `{ [v texture {...}] ... }` after `texture_map`.
     fn texture_map_body(&mut self) -> R<Vec<(f64, Texture)>> {
-        let open = self.expect(Punct::LBrace, "after `texture_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Texture)>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
+        self.read_map_entries(
+            "texture_map",
+            "texture map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
                 // Entries are texture bodies: `[0.5 T_Named]`, `[1 pigment {...} finish {...}]`.
-                let t = if self.peek()?.is_ident("texture") {
-                    self.next()?;
-                    self.texture_body(self.default_texture.clone())?
+                let t = if ev.peek()?.is_ident("texture") {
+                    ev.next()?;
+                    ev.texture_body(ev.default_texture.clone())?
                 } else {
-                    self.texture_items(self.default_texture.clone(), Punct::RBracket)?
+                    ev.texture_items(ev.default_texture.clone(), Punct::RBracket)?
                 };
                 map.push((v, t));
-                self.expect(Punct::RBracket, "to close the texture map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the texture map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// `{ ... }` after `normal`.
@@ -619,54 +646,44 @@ impl Evaluator<'_> {
 
     /// `{ [v, <height, slope>] ... }` after `slope_map`, sorted as written.
     fn slope_map_body(&mut self) -> R<Vec<SlopeEntry>> {
-        let open = self.expect(Punct::LBrace, "after `slope_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<SlopeEntry>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let value = self.map_value()?;
-                self.eat(Punct::Comma)?;
-                let v = self.vector3()?;
+        self.read_map_entries(
+            "slope_map",
+            "slope map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let value = ev.map_value()?;
+                ev.eat(Punct::Comma)?;
+                let v = ev.vector3()?;
                 map.push(SlopeEntry {
                     value,
                     height: v.x,
                     slope: v.y,
                 });
-                self.expect(Punct::RBracket, "to close the slope map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the slope map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// `{ [v normal body] ... }` after `normal_map`: entries are bare normal bodies
     /// (`[0.5 bumps 0.3 scale 2]`); POV-Ray rejects a `normal {...}` wrapper there.
     fn normal_map_body(&mut self) -> R<Vec<(f64, Normal)>> {
-        let open = self.expect(Punct::LBrace, "after `normal_map`")?;
-        self.enter(open.span)?;
-        let r = (|| -> R<Vec<(f64, Normal)>> {
-            let mut map = Vec::new();
-            while self.eat(Punct::LBracket)? {
-                let v = self.float()?;
-                self.eat(Punct::Comma)?;
-                let n = self.normal_items(None, Punct::RBracket)?;
+        self.read_map_entries(
+            "normal_map",
+            "normal map",
+            |_| Ok(Vec::new()),
+            |ev, map| {
+                let v = ev.float()?;
+                ev.eat(Punct::Comma)?;
+                let n = ev.normal_items(None, Punct::RBracket)?;
                 // An entry without a pattern leaves the normal as it is.
                 let n = n.unwrap_or_else(|| Normal {
                     amount: 0.0,
                     ..Normal::new(Pattern::new(PatternKind::Bozo))
                 });
                 map.push((v, n));
-                self.expect(Punct::RBracket, "to close the normal map entry")?;
-            }
-            Ok(map)
-        })();
-        self.leave();
-        let map = r?;
-        self.expect(Punct::RBrace, "to close the normal map")?;
-        Ok(map)
+                Ok(())
+            },
+        )
     }
 
     /// One entry of a pattern list: `pigment {...}` or a colour; `None` when neither follows.
@@ -715,11 +732,7 @@ impl Evaluator<'_> {
     }
 
     fn finish_items(&mut self, mut f: Finish) -> R<Finish> {
-        // `albedo` forms depend on brilliance, phong_size and roughness, which may come
-        // later in the block, so they are resolved at the end.
-        let mut diffuse_albedo = None;
-        let mut phong_albedo = None;
-        let mut specular_albedo = None;
+        let mut albedo = Albedos::default();
         loop {
             let tok = self.peek()?;
             if tok.is_punct(Punct::RBrace) {
@@ -738,48 +751,16 @@ impl Evaluator<'_> {
                 "ambient" => f.ambient = self.colour_or_float()?,
                 "emission" => f.emission = self.colour_or_float()?,
                 "diffuse" => {
-                    let albedo = self.eat_ident("albedo")?;
-                    let d = self.float()?;
-                    if albedo {
-                        diffuse_albedo = Some(d);
-                    } else {
-                        diffuse_albedo = None;
-                        f.diffuse = d;
-                    }
+                    self.albedo_or_value(&mut f.diffuse, &mut albedo.diffuse)?;
                     if self.eat(Punct::Comma)? {
                         f.diffuse_back = self.float()?;
                     }
                 }
                 "brilliance" => f.brilliance = self.float()?,
-                "phong" => {
-                    let albedo = self.eat_ident("albedo")?;
-                    let v = self.float()?;
-                    if albedo {
-                        phong_albedo = Some(v);
-                    } else {
-                        phong_albedo = None;
-                        f.phong = v;
-                    }
-                }
+                "phong" => self.albedo_or_value(&mut f.phong, &mut albedo.phong)?,
                 "phong_size" => f.phong_size = self.float()?,
-                "specular" => {
-                    let albedo = self.eat_ident("albedo")?;
-                    let v = self.float()?;
-                    if albedo {
-                        specular_albedo = Some(v);
-                    } else {
-                        specular_albedo = None;
-                        f.specular = v;
-                    }
-                }
-                "roughness" => {
-                    let (v, s) = self.expr()?;
-                    let r = self.to_float(&v, s)?;
-                    if r <= 0.0 {
-                        return Err(self.err(s, "roughness must be greater than zero"));
-                    }
-                    f.roughness = r;
-                }
+                "specular" => self.albedo_or_value(&mut f.specular, &mut albedo.specular)?,
+                "roughness" => f.roughness = self.positive_float("roughness")?,
                 "metallic" => {
                     f.metallic = if self.starts_float()? {
                         self.float()?
@@ -797,12 +778,7 @@ impl Evaluator<'_> {
                     }
                 }
                 "reflection_exponent" => {
-                    let (v, s) = self.expr()?;
-                    let e = self.to_float(&v, s)?;
-                    if e <= 0.0 {
-                        return Err(self.err(s, "reflection_exponent must be greater than zero"));
-                    }
-                    f.reflection.exponent = e;
+                    f.reflection.exponent = self.positive_float("reflection_exponent")?;
                 }
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => f.crand = self.float()?,
@@ -814,17 +790,32 @@ impl Evaluator<'_> {
                 _ => return Err(self.stray_in_block(&tok, "the finish")),
             }
         }
-        if let Some(k) = diffuse_albedo {
-            f.diffuse = k * (f.brilliance + 1.0) / 2.0;
-        }
-        if let Some(p) = phong_albedo {
-            f.phong = p * (f.phong_size + 1.0) / 2.0;
-        }
-        if let Some(s) = specular_albedo {
-            let e = 1.0 / f.roughness;
-            f.specular = s * (e + 2.0) / (4.0 * (2.0 - 2f64.powf(-e / 2.0)));
-        }
+        albedo.resolve(&mut f);
         Ok(f)
+    }
+
+    /// `phong [albedo] v` (and `diffuse`, `specular`): a plain value is set now; an albedo
+    /// is kept for the end of the block, and the last of the two written wins.
+    fn albedo_or_value(&mut self, value: &mut f64, albedo: &mut Option<f64>) -> R<()> {
+        let is_albedo = self.eat_ident("albedo")?;
+        let v = self.float()?;
+        if is_albedo {
+            *albedo = Some(v);
+        } else {
+            *albedo = None;
+            *value = v;
+        }
+        Ok(())
+    }
+
+    /// A float that must be greater than zero (it is divided by or raised to).
+    fn positive_float(&mut self, what: &str) -> R<f64> {
+        let (v, s) = self.expr()?;
+        let x = self.to_float(&v, s)?;
+        if x <= 0.0 {
+            return Err(self.err(s, format!("{what} must be greater than zero")));
+        }
+        Ok(x)
     }
 
     /// A float (all of r, g, b) or a colour (its r, g, b).
