@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use penumbra::lang::{LoadOptions, load_scene_with};
 use penumbra::output::{BitDepth, write_image};
-use penumbra::render::{AreaLightMode, Progress, RenderOptions, Splitting};
+use penumbra::render::{AreaLightMode, LightSamples, Progress, RenderOptions, Splitting};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
 use penumbra::study::{compare as study_compare, converge as study_converge};
 
@@ -88,9 +88,10 @@ struct RenderArgs {
     /// at random in proportion to its weight.
     #[arg(long, value_enum, default_value = "both")]
     splitting: Split,
-    /// Shadow rays per area light at each shading point.
-    #[arg(long, default_value_t = 1)]
-    light_samples: u32,
+    /// Shadow rays per area light at each shading point, or `cover`: enough that each
+    /// pixel's samples together test every point of POV-Ray's light grid.
+    #[arg(long, default_value = "1")]
+    light_samples: LightSamples,
     /// Spend the samples where a pilot pass finds noise (same average per pixel).
     #[arg(long)]
     adaptive: bool,
@@ -189,6 +190,12 @@ struct ConvergeArgs {
     /// Target errors for the time-to-reach table, comma-separated.
     #[arg(long, value_delimiter = ',', default_value = "0.01,0.005")]
     targets: Vec<f64>,
+    /// Shadow rays per area light at each shading point, or `cover` (as for render).
+    #[arg(long, default_value = "1")]
+    light_samples: LightSamples,
+    /// Per-pixel adaptive sample counts (as for render).
+    #[arg(long)]
+    adaptive: bool,
     /// No progress lines.
     #[arg(short, long)]
     quiet: bool,
@@ -443,6 +450,8 @@ impl ConvergeArgs {
             threads: self.threads,
             stratified: !self.independent,
             targets: self.targets,
+            light_samples: self.light_samples,
+            adaptive: self.adaptive,
         }
     }
 }

@@ -34,6 +34,39 @@ pub struct PreparedArea {
     cdf2: Vec<f64>,
 }
 
+/// How many shadow rays an area light gets per shading point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightSamples {
+    /// This many, spread over the light from the sample's stratified position.
+    Fixed(u32),
+    /// With POV-Ray's grid (`--area-lights pov`), as many as it takes for a pixel's samples
+    /// together to test every grid point: POV-Ray's shadow rays per pixel, shared among the
+    /// pixel's samples instead of spent on each. Otherwise one.
+    Cover,
+}
+
+impl Default for LightSamples {
+    fn default() -> Self {
+        LightSamples::Fixed(1)
+    }
+}
+
+impl std::str::FromStr for LightSamples {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        if s == "cover" {
+            return Ok(LightSamples::Cover);
+        }
+        match s.parse::<u32>() {
+            Ok(n) if n >= 1 => Ok(LightSamples::Fixed(n)),
+            _ => Err(format!(
+                "expected a count of at least 1 or `cover`, found `{s}`"
+            )),
+        }
+    }
+}
+
 impl PreparedLight {
     pub fn new(light: &Light) -> PreparedLight {
         let area = light.area.map(|a| PreparedArea {

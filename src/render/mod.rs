@@ -17,7 +17,7 @@ use rayon::prelude::*;
 
 pub use film::{Film, PixelSum};
 pub use integrator::{Integrator, RayCounts, Splitting};
-pub use lights::AreaLightMode;
+pub use lights::{AreaLightMode, LightSamples};
 pub use prepared::PreparedScene;
 pub use sampler::PixelSampler;
 
@@ -43,7 +43,7 @@ pub struct RenderOptions {
     pub area_lights: AreaLightMode,
     pub splitting: Splitting,
     /// Shadow rays per area light per shading point.
-    pub light_samples: u32,
+    pub light_samples: LightSamples,
     /// Spend the samples where a pilot pass finds the most noise (same average count).
     pub adaptive: bool,
     /// Stratified jittered samples (the default); false draws independent uniform samples,
@@ -63,7 +63,7 @@ impl Default for RenderOptions {
             roulette: true,
             area_lights: AreaLightMode::Pov,
             splitting: Splitting::Both,
-            light_samples: 1,
+            light_samples: LightSamples::Fixed(1),
             adaptive: false,
             stratified: true,
         }
@@ -134,8 +134,8 @@ pub fn camera_ray(camera: &Camera, x: f64, y: f64, lens: (f64, f64)) -> Ray {
 
 /// Renders into a film. Each pixel's samples are taken in index order by one thread, and
 /// tiles are written back in a fixed order, so the result is the same for any thread count.
-/// With `adaptive`, a pilot pass (discarded, so the estimate stays unbiased) measures each
-/// pixel's noise, and the sample budget is shared out in proportion to it.
+/// With `adaptive`, a pilot pass measures the noise and the rest of the sample budget
+/// follows it (see [`adaptive_passes`]).
 pub fn render(
     scene: &PreparedScene,
     options: &RenderOptions,
@@ -173,21 +173,7 @@ pub fn render(
                 "adaptive sampling cannot be split into sample ranges".into(),
             ));
         }
-        let pilot = SamplePlan::Uniform {
-            spp: ADAPTIVE_PILOT,
-            range: 0..ADAPTIVE_PILOT,
-            seed: options.seed ^ 0xad47_1be5_5eed_0001,
-        };
-        let (pilot_film, pilot_sq, pilot_rays) = run(&pilot, &());
-        let counts = allocate(&pilot_film, &pilot_sq, spp);
-        let samples: u64 = counts.iter().map(|&n| n as u64).sum();
-        let plan = SamplePlan::PerPixel {
-            counts,
-            seed: options.seed,
-        };
-        let (film, _, mut rays) = run(&plan, progress);
-        rays.add(&pilot_rays);
-        (film, rays, samples + (w * h) as u64 * ADAPTIVE_PILOT as u64)
+        adaptive_passes(options, spp, &|plan, p| run(plan, p), progress)
     } else {
         let plan = SamplePlan::Uniform {
             spp,
@@ -212,6 +198,39 @@ pub fn render(
 /// Samples per pixel of the adaptive pilot pass.
 const ADAPTIVE_PILOT: u32 = 4;
 
+/// A render pass, as `render` runs it on its thread pool.
+type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress) -> (Film, Vec<f64>, RayCounts) + 'a;
+
+/// Adaptive sampling in two passes. A pilot of a few samples per pixel measures the noise;
+/// each pixel's further samples then follow the noise its neighbours showed, not its own,
+/// so its sample count does not depend on its own samples and the pilot's samples can be
+/// kept in its mean without bias (a pixel's own noise deciding its count would bias it).
+fn adaptive_passes(
+    options: &RenderOptions,
+    spp: u32,
+    run: &Pass,
+    progress: &dyn Progress,
+) -> (Film, RayCounts, u64) {
+    let pilot_spp = ADAPTIVE_PILOT.min(spp);
+    let pilot = SamplePlan::Uniform {
+        spp: pilot_spp,
+        range: 0..pilot_spp,
+        seed: options.seed ^ 0xad47_1be5_5eed_0001,
+    };
+    let (mut film, pilot_sq, mut rays) = run(&pilot, &());
+    let counts = allocate(&film, &pilot_sq, pilot_spp, spp);
+    let extra: u64 = counts.iter().map(|&n| n as u64).sum();
+    let plan = SamplePlan::PerPixel {
+        counts,
+        seed: options.seed,
+    };
+    let (more, _, more_rays) = run(&plan, progress);
+    film.merge(&more);
+    rays.add(&more_rays);
+    let pixels = (options.width * options.height) as u64;
+    (film, rays, extra + pixels * pilot_spp as u64)
+}
+
 /// Which samples each pixel takes.
 enum SamplePlan {
     Uniform {
@@ -219,23 +238,28 @@ enum SamplePlan {
         range: Range<u32>,
         seed: u64,
     },
-    /// Adaptive sampling: pixel i takes counts[i] samples (all of its own strata).
+    /// Adaptive sampling: pixel i takes counts[i] samples (all of its own strata; none
+    /// where the count is 0).
     PerPixel { counts: Vec<u32>, seed: u64 },
 }
 
-/// Shares `spp` samples per pixel on average out in proportion to each pixel's standard
-/// deviation (which minimises the summed variance for a fixed budget). A pilot of a few
-/// samples can miss noise that is there (four light samples that happen to agree), so each
-/// pixel takes the largest deviation in its 3x3 neighbourhood, and keeps at least half the
-/// average.
-fn allocate(pilot: &Film, pilot_sq: &[f64], spp: u32) -> Vec<u32> {
-    let n = ADAPTIVE_PILOT as f64;
+/// The samples each pixel takes after a pilot of `pilot` samples, for `spp` per pixel on
+/// average in all, in proportion to the noise around it (which minimises the summed
+/// variance for a fixed budget): the largest pilot deviation among its eight neighbours. A
+/// pilot of a few samples can miss noise that is there (four light samples that happen to
+/// agree), hence the neighbourhood; the pixel itself is left out so that its count does not
+/// depend on its own samples.
+fn allocate(pilot: &Film, pilot_sq: &[f64], pilot_spp: u32, spp: u32) -> Vec<u32> {
+    let n = pilot_spp as f64;
     let (w, h) = (pilot.width, pilot.height);
     let sigma: Vec<f64> = pilot
         .pixels
         .iter()
         .zip(pilot_sq)
         .map(|(p, sq)| {
+            if pilot_spp < 2 {
+                return 0.0;
+            }
             let m = p.mean();
             let mean = (m[0] + m[1] + m[2]) / 3.0;
             ((sq - n * mean * mean) / (n - 1.0)).max(0.0).sqrt()
@@ -247,15 +271,16 @@ fn allocate(pilot: &Film, pilot_sq: &[f64], spp: u32) -> Vec<u32> {
             let mut m = 0.0f64;
             for yy in y.saturating_sub(1)..(y + 2).min(h) {
                 for xx in x.saturating_sub(1)..(x + 2).min(w) {
-                    m = m.max(sigma[yy * w + xx]);
+                    if (xx, yy) != (x, y) {
+                        m = m.max(sigma[yy * w + xx]);
+                    }
                 }
             }
             m
         })
         .collect();
-    let floor = (spp / 2).max(1);
     let pixels = spread.len() as f64;
-    let spare = (spp as f64 - floor as f64) * pixels;
+    let spare = (spp - pilot_spp) as f64 * pixels;
     let total: f64 = spread.iter().sum();
     spread
         .iter()
@@ -265,7 +290,7 @@ fn allocate(pilot: &Film, pilot_sq: &[f64], spp: u32) -> Vec<u32> {
             } else {
                 spare / pixels
             };
-            floor + extra.round() as u32
+            extra.round() as u32
         })
         .collect()
 }
@@ -304,8 +329,8 @@ fn render_pass(
                 let (spp, range, seed) = match plan {
                     SamplePlan::Uniform { spp, range, seed } => (*spp, range.clone(), *seed),
                     SamplePlan::PerPixel { counts, seed } => {
-                        let n = counts[y * w + x].max(1);
-                        (n, 0..n, *seed)
+                        let n = counts[y * w + x];
+                        (n.max(1), 0..n, *seed)
                     }
                 };
                 if sampler.samples_per_pixel() != spp {

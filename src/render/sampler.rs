@@ -99,10 +99,43 @@ impl PixelSampler {
         )
     }
 
+    /// Which sample of the pixel this is.
+    pub fn index(&self) -> u32 {
+        self.index
+    }
+
+    /// A seed shared by every sample of this pixel, for decisions taken jointly over the
+    /// pixel's samples (which grid points of an area light each sample tests); each `round`
+    /// gives an independent one. It is independent of the values `get_1d`/`get_2d` draw.
+    pub fn pixel_seed(&self, dimension: u32, round: u32) -> u32 {
+        let key = mix(self.pixel_key ^ mix(SHARED ^ ((dimension as u64) << 32 | round as u64)));
+        (key >> 32) as u32
+    }
+
+    /// Uniform values for this sample alone, as many as needed, in a stream of their own
+    /// (independent of `get_1d`/`get_2d` in the same dimension); not stratified.
+    pub fn free_stream(&self, dimension: u32) -> FreeStream {
+        let key = mix(self.pixel_key ^ mix(FREE ^ dimension as u64));
+        FreeStream(Pcg32::new(mix(key ^ self.index as u64), key | 1))
+    }
+
     /// Skips to a fixed dimension, so that the value a light or a bounce uses does not
     /// depend on how many values earlier events happened to draw.
     pub fn set_dimension(&mut self, dimension: u32) {
         self.dimension = dimension;
+    }
+}
+
+/// Salts that keep the shared and free streams apart from the stratified ones.
+const SHARED: u64 = 0x5348_4152_4544_0001;
+const FREE: u64 = 0x4652_4545_0000_0001;
+
+/// Independent uniform values in [0, 1) for one pixel sample.
+pub struct FreeStream(Pcg32);
+
+impl FreeStream {
+    pub fn next_f64(&mut self) -> f64 {
+        unit_f64(&mut self.0)
     }
 }
 

@@ -11,7 +11,7 @@ use super::reference::{ReferenceRequest, read_reference, render_povray};
 use super::{Reference, StudyError};
 use crate::lang::{LoadOptions, load_scene};
 use crate::output::Image;
-use crate::render::RenderOptions;
+use crate::render::{LightSamples, RenderOptions};
 use crate::scene::Scene;
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -49,6 +49,10 @@ pub struct ConvergeRequest {
     pub threads: Option<usize>,
     pub stratified: bool,
     pub targets: Vec<f64>,
+    /// Shadow rays per area light per shading point.
+    pub light_samples: LightSamples,
+    /// Per-pixel adaptive sample counts (`--adaptive`).
+    pub adaptive: bool,
 }
 
 /// One sample count: medians and ranges over the K seeds, and the split.
@@ -402,6 +406,8 @@ fn measure_spp(study: &Study, spp: u32) -> Result<PenumbraRow, StudyError> {
             seed: SEED_BASE + k,
             threads: Some(study.threads),
             stratified: req.stratified,
+            light_samples: req.light_samples,
+            adaptive: req.adaptive,
             ..RenderOptions::default()
         };
         let start = Instant::now();

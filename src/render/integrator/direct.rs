@@ -8,8 +8,9 @@ use crate::appearance::finish::{diffuse_term, metallic_tint, phong_factor, specu
 use crate::appearance::texture_layers;
 use crate::geometry::{Ray, offset_point};
 use crate::render::dimensions::Purpose;
+use crate::render::lights::LightSamples;
 use crate::render::lights::{AreaLightMode, PreparedArea, PreparedLight};
-use crate::render::sampler::PixelSampler;
+use crate::render::sampler::{PixelSampler, permute};
 use crate::scene::{Colour, Finish};
 
 use super::optics::fade;
@@ -204,34 +205,45 @@ impl Integrator<'_> {
         let dim = self
             .layout
             .dimension(q.level, Purpose::LightPosition(q.index));
-        sampler.set_dimension(dim);
-        let s = sampler.get_2d();
         let mut shadow_to = |target: DVec3| {
             let to = target - q.origin;
             let dist = to.length();
             counts.shadow += 1;
             self.shadow_filter(&Ray::new(q.origin, to / dist), dist * (1.0 - 1e-9))
         };
-        if area.adaptive.is_some() && self.area_lights == AreaLightMode::Pov {
+        let pov = self.area_lights == AreaLightMode::Pov;
+        if area.adaptive.is_some() && pov {
             // POV-Ray's adaptive rule depends on what the corners see, so it is evaluated
             // as POV-Ray does, with jitter drawn from this sample.
+            sampler.set_dimension(dim);
+            let s = sampler.get_2d();
             let seed = ((s.0 * 4_294_967_296.0) as u64) << 32 | (s.1 * 4_294_967_296.0) as u64;
             let towards = q.light.location - q.p;
             return area.adaptive_filter(q.light.location, towards, q.colour, seed, shadow_to);
         }
-        self.area_samples(q, area, s, &mut shadow_to)
+        let n = match self.light_samples {
+            LightSamples::Cover if pov => {
+                return cover_grid(q, area, dim, sampler, &mut shadow_to);
+            }
+            LightSamples::Cover => 1,
+            LightSamples::Fixed(n) => n,
+        };
+        sampler.set_dimension(dim);
+        let s = sampler.get_2d();
+        self.area_samples(q, area, s, n, &mut shadow_to)
     }
 
-    /// Several shadow samples of an area light: the stratified sample shifted by a
-    /// well-spread set, so each is uniform and together they cover the light.
+    /// `n` shadow samples of an area light: the stratified sample shifted by a well-spread
+    /// set, so each is uniform and together they cover the light.
     fn area_samples(
         &self,
         q: &ShadowQuery,
         area: &PreparedArea,
         s: (f64, f64),
+        n: u32,
         shadow_to: &mut dyn FnMut(DVec3) -> DVec3,
     ) -> DVec3 {
-        let n = self.light_samples.max(1);
+        let n = n.max(1);
         let mut sum = DVec3::ZERO;
         for k in 0..n {
             let shift = (k as f64 / n as f64, (k as f64 * GOLDEN).fract());
@@ -310,6 +322,43 @@ impl Integrator<'_> {
         }
         filter
     }
+}
+
+/// The light's grid shared out over the pixel's samples. Sample k of N tests L = ceil(points
+/// / N) points, so the pixel's samples together test at least as many as the grid has:
+/// positions k L .. (k + 1) L of one random ordering of a stratified mx x my grid on the unit
+/// square (mx my >= N L), each drawn through POV-Ray's grid weights as a single sample is.
+/// Every position is uniform over the square, so the expectation is POV-Ray's grid sum for
+/// any N; a fully lit or fully shadowed point has no noise at all, and a penumbra that
+/// changes little across the pixel almost none: the pixel sees the whole light, as POV-Ray's
+/// does, for POV-Ray's shadow rays per pixel shared among the pixel's samples.
+fn cover_grid(
+    q: &ShadowQuery,
+    area: &PreparedArea,
+    dim: u32,
+    sampler: &PixelSampler,
+    shadow_to: &mut dyn FnMut(DVec3) -> DVec3,
+) -> DVec3 {
+    let n = sampler.samples_per_pixel();
+    let per_sample = (area.size1 * area.size2).div_ceil(n).max(1);
+    let positions = n * per_sample;
+    let mx = (positions as f64).sqrt().ceil() as u32;
+    let my = positions.div_ceil(mx);
+    let seed = sampler.pixel_seed(dim, 0);
+    let mut jitter = sampler.free_stream(dim);
+    let towards = q.light.location - q.p;
+    let first = sampler.index() * per_sample;
+    let mut sum = DVec3::ZERO;
+    for position in first..first + per_sample {
+        let stratum = permute(position, mx * my, seed);
+        let s = (
+            ((stratum % mx) as f64 + jitter.next_f64()) / mx as f64,
+            ((stratum / mx) as f64 + jitter.next_f64()) / my as f64,
+        );
+        let point = area.sample_point(q.light.location, s, towards, AreaLightMode::Pov, false);
+        sum += shadow_to(point);
+    }
+    sum / per_sample as f64
 }
 
 /// What a shadow ray remembers of the transparent surfaces it crossed, in fixed arrays so

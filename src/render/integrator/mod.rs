@@ -28,7 +28,7 @@ use crate::scene::{Colour, Finish};
 
 use super::RenderOptions;
 use super::dimensions::{DimensionLayout, Purpose};
-use super::lights::AreaLightMode;
+use super::lights::{AreaLightMode, LightSamples};
 use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
 use direct::ShadedLayer;
@@ -155,7 +155,7 @@ pub struct Integrator<'a> {
     area_lights: AreaLightMode,
     /// Shadow rays per area light per shading point (more where soft shadows dominate the
     /// noise; each camera sample then costs more).
-    light_samples: u32,
+    light_samples: LightSamples,
 }
 
 impl<'a> Integrator<'a> {
