@@ -188,6 +188,14 @@ fn smoothstep(t: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
 }
 
+/// An area light's centre and (oriented) axes as one shading point sees them.
+#[derive(Clone, Copy, Debug)]
+pub struct AreaFrame {
+    pub centre: DVec3,
+    pub axis1: DVec3,
+    pub axis2: DVec3,
+}
+
 impl PreparedArea {
     /// A point of the light to shadow-test, from the stratified pair (s1, s2). In `pov`
     /// mode it is a grid point drawn with POV-Ray's weights (or with equal weights when
@@ -197,9 +205,8 @@ impl PreparedArea {
     /// is the direction from the shaded point to the light centre (for `orient`).
     pub fn sample_point(
         &self,
-        centre: DVec3,
+        frame: &AreaFrame,
         (s1, s2): (f64, f64),
-        towards: DVec3,
         mode: AreaLightMode,
         uniform: bool,
     ) -> DVec3 {
@@ -226,15 +233,26 @@ impl PreparedArea {
         };
         if mode == AreaLightMode::Continuous {
             // Already inside the disc for circular lights.
-            let d = self.orient_axes(towards);
-            return centre + d.0 * u + d.1 * v;
+            return frame.centre + frame.axis1 * u + frame.axis2 * v;
         }
-        self.place(centre, u, v, towards)
+        self.place(frame, u, v)
+    }
+
+    /// The light's centre and axes as seen from one shading point (`towards` points from it
+    /// to the centre; `orient` turns the axes to face it), computed once for all of that
+    /// point's shadow rays.
+    pub fn frame(&self, centre: DVec3, towards: DVec3) -> AreaFrame {
+        let (axis1, axis2) = self.orient_axes(towards);
+        AreaFrame {
+            centre,
+            axis1,
+            axis2,
+        }
     }
 
     /// The light position for grid coordinates (u, v) in [-1/2, 1/2]: POV-Ray's circular
     /// mapping and orient.
-    fn place(&self, centre: DVec3, mut u: f64, mut v: f64, towards: DVec3) -> DVec3 {
+    fn place(&self, frame: &AreaFrame, mut u: f64, mut v: f64) -> DVec3 {
         if self.circular {
             u += 0.001;
             v += 0.001;
@@ -243,8 +261,7 @@ impl PreparedArea {
             u *= s;
             v *= s;
         }
-        let (a1, a2) = self.orient_axes(towards);
-        centre + a1 * u + a2 * v
+        frame.centre + frame.axis1 * u + frame.axis2 * v
     }
 
     fn orient_axes(&self, towards: DVec3) -> (DVec3, DVec3) {
@@ -267,17 +284,10 @@ impl PreparedArea {
 impl PreparedArea {
     /// The grid point (i, j), jittered by `jitter` (each component in [0, 1)), with
     /// circular and orient applied.
-    fn grid_point(
-        &self,
-        centre: DVec3,
-        i: usize,
-        j: usize,
-        jitter: (f64, f64),
-        towards: DVec3,
-    ) -> DVec3 {
+    fn grid_point(&self, frame: &AreaFrame, i: usize, j: usize, jitter: (f64, f64)) -> DVec3 {
         let u = grid_coordinate(i, self.size1, self.jitter.then_some(jitter.0));
         let v = grid_coordinate(j, self.size2, self.jitter.then_some(jitter.1));
-        self.place(centre, u, v, towards)
+        self.place(frame, u, v)
     }
 
     /// POV-Ray's adaptive shadow test, reproduced exactly for one shaded point: corners of
@@ -295,6 +305,7 @@ impl PreparedArea {
     ) -> DVec3 {
         let (n1, n2) = (self.size1 as usize, self.size2 as usize);
         let limit = self.adaptive.unwrap_or(100);
+        let frame = self.frame(centre, towards);
         ADAPTIVE_CACHE.with(|cache| {
             let mut cache = cache.borrow_mut();
             cache.clear();
@@ -308,7 +319,7 @@ impl PreparedArea {
                     0xda3e_39cb_94b9_5bdb,
                 );
                 let jitter = (unit(&mut rng), unit(&mut rng));
-                let f = filter_to(self.grid_point(centre, i, j, jitter, towards));
+                let f = filter_to(self.grid_point(&frame, i, j, jitter));
                 cache[j * n1 + i] = Some(f);
                 f
             };

@@ -176,13 +176,8 @@ impl Integrator<'_> {
                     .layout
                     .dimension(s.path.level, Purpose::LightShading(index));
                 sampler.set_dimension(dim);
-                let at = area.sample_point(
-                    light.location,
-                    sampler.get_2d(),
-                    light.location - p,
-                    self.area_lights,
-                    true,
-                );
+                let frame = area.frame(light.location, light.location - p);
+                let at = area.sample_point(&frame, sampler.get_2d(), self.area_lights, true);
                 light.incidence_from(p, at)
             }
             _ => light.incidence(p),
@@ -244,13 +239,12 @@ impl Integrator<'_> {
         shadow_to: &mut dyn FnMut(DVec3) -> DVec3,
     ) -> DVec3 {
         let n = n.max(1);
+        let frame = area.frame(q.light.location, q.light.location - q.p);
         let mut sum = DVec3::ZERO;
         for k in 0..n {
             let shift = (k as f64 / n as f64, (k as f64 * GOLDEN).fract());
             let sk = ((s.0 + shift.0).fract(), (s.1 + shift.1).fract());
-            let towards = q.light.location - q.p;
-            let target = area.sample_point(q.light.location, sk, towards, self.area_lights, false);
-            sum += shadow_to(target);
+            sum += shadow_to(area.sample_point(&frame, sk, self.area_lights, false));
         }
         sum / n as f64
     }
@@ -346,7 +340,7 @@ fn cover_grid(
     let my = positions.div_ceil(mx);
     let seed = sampler.pixel_seed(dim, 0);
     let mut jitter = sampler.free_stream(dim);
-    let towards = q.light.location - q.p;
+    let frame = area.frame(q.light.location, q.light.location - q.p);
     let first = sampler.index() * per_sample;
     let mut sum = DVec3::ZERO;
     for position in first..first + per_sample {
@@ -355,8 +349,7 @@ fn cover_grid(
             ((stratum % mx) as f64 + jitter.next_f64()) / mx as f64,
             ((stratum / mx) as f64 + jitter.next_f64()) / my as f64,
         );
-        let point = area.sample_point(q.light.location, s, towards, AreaLightMode::Pov, false);
-        sum += shadow_to(point);
+        sum += shadow_to(area.sample_point(&frame, s, AreaLightMode::Pov, false));
     }
     sum / per_sample as f64
 }
