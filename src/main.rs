@@ -90,7 +90,7 @@ struct RenderArgs {
     splitting: Split,
     /// Shadow rays per area light at each shading point, or `cover`: enough that each
     /// pixel's samples together test every point of POV-Ray's light grid.
-    #[arg(long, default_value = "1")]
+    #[arg(long, default_value = "cover")]
     light_samples: LightSamples,
     /// Spend the samples where a pilot pass finds noise (same average per pixel).
     #[arg(long)]
@@ -191,7 +191,7 @@ struct ConvergeArgs {
     #[arg(long, value_delimiter = ',', default_value = "0.01,0.005")]
     targets: Vec<f64>,
     /// Shadow rays per area light at each shading point, or `cover` (as for render).
-    #[arg(long, default_value = "1")]
+    #[arg(long, default_value = "cover")]
     light_samples: LightSamples,
     /// Per-pixel adaptive sample counts (as for render).
     #[arg(long)]

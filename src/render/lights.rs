@@ -45,9 +45,11 @@ pub enum LightSamples {
     Cover,
 }
 
+/// Covering the grid is the default: at 640x480 it made soft shadows 2-3x cheaper to a
+/// given noise than one shadow ray per sample, and never worse (docs/convergence.md).
 impl Default for LightSamples {
     fn default() -> Self {
-        LightSamples::Fixed(1)
+        LightSamples::Cover
     }
 }
 

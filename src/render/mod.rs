@@ -63,7 +63,7 @@ impl Default for RenderOptions {
             roulette: true,
             area_lights: AreaLightMode::Pov,
             splitting: Splitting::Both,
-            light_samples: LightSamples::Fixed(1),
+            light_samples: LightSamples::Cover,
             adaptive: false,
             stratified: true,
         }

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The equal-error benchmark where users render: 640x480, penumbra at several sample counts
+# beside POV-Ray at -A, +A0.3, +AM2 +R3 and +AM2 +R4, measured side by side in one run
+# against a POV-Ray reference at k = 8 (cached under target/bench640: they take minutes to
+# hours each). Writes docs/convergence/640/NAME/ and prints each scene's summary.
+# Usage: docs/convergence/bench640.sh [SCENE.pov...]   (default: the scenes listed below)
+# Environment: SPP (default 1,4,16), SEEDS (default 2), THREADS (default 1: penumbra and
+# POV-Ray alike, so a loaded 2-core machine disturbs both the same way), OPTIONS (extra
+# penumbra render options, e.g. "--adaptive").
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+SPP=${SPP:-1,4,16}
+SEEDS=${SEEDS:-2}
+THREADS=${THREADS:-1}
+scenes=("$@")
+[ ${#scenes[@]} -gt 0 ] || scenes=(scenes/area_circular_9x9.pov scenes/soft_shadow.pov
+  scenes/area_grid_6x2.pov scenes/area_illumination.pov scenes/glass.pov
+  scenes/reflection.pov scenes/checker.pov scenes/shape_quadrics.pov scenes/focal_blur.pov
+  scenes/csg_operations.pov scenes/pattern_gradient.pov scenes/area_adaptive.pov)
+cargo build --release --quiet
+bin=./target/release/penumbra
+refs=target/bench640
+mkdir -p "$refs" docs/convergence/640
+for scene in "${scenes[@]}"; do
+  name=$(basename "$scene" .pov)
+  [ -f "$refs/$name.exr" ] || "$bin" reference "$scene" --output "$refs/$name.exr" \
+    --width 640 --height 480 --supersample 8
+  # shellcheck disable=SC2086
+  "$bin" converge "$scene" --reference "$refs/$name.exr" --spp "$SPP" --seeds "$SEEDS" \
+    --threads "$THREADS" --povray --quiet --targets 0.01,0.005,0.0025 ${OPTIONS:-} \
+    --output-dir "docs/convergence/640/$name"
+done
