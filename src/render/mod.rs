@@ -179,6 +179,7 @@ pub fn render(
             spp,
             range: range.clone(),
             seed: options.seed,
+            one_ray: false,
         };
         let (film, _, rays) = run(&plan, progress);
         (
@@ -216,16 +217,38 @@ fn adaptive_passes(
         spp: pilot_spp,
         range: 0..pilot_spp,
         seed: options.seed ^ 0xad47_1be5_5eed_0001,
+        one_ray: true,
     };
     let (mut film, pilot_sq, mut rays) = run(&pilot, &());
-    let counts = allocate(&film, &pilot_sq, pilot_spp, spp);
+    let noise = neighbour_noise(&film, &pilot_sq, pilot_spp);
+    let counts = allocate(&noise, pilot_spp, spp);
     let extra: u64 = counts.iter().map(|&n| n as u64).sum();
+    // Where the neighbours showed no noise at all, the light is seen whole or not at all
+    // there: one shadow ray per sample is exact, and covering the grid would be wasted.
+    let one_ray: Vec<bool> = noise.iter().map(|&s| s == 0.0).collect();
     let plan = SamplePlan::PerPixel {
         counts,
         seed: options.seed,
+        one_ray,
     };
     let (more, _, more_rays) = run(&plan, progress);
-    film.merge(&more);
+    // The pilot's one-ray samples stay in a pixel's mean only where its further samples
+    // are of the same kind: beside samples that cover the light grid they would only add
+    // their noise. (Which it is depends on the neighbours alone, so either mean is unbiased.)
+    let SamplePlan::PerPixel {
+        counts, one_ray, ..
+    } = &plan
+    else {
+        unreachable!("the plan above is per pixel")
+    };
+    for (i, (pixel, extra)) in film.pixels.iter_mut().zip(&more.pixels).enumerate() {
+        if one_ray[i] || counts[i] == 0 {
+            pixel.merge(extra);
+        } else {
+            *pixel = *extra;
+        }
+    }
+    film.non_finite.extend_from_slice(&more.non_finite);
     rays.add(&more_rays);
     let pixels = (options.width * options.height) as u64;
     (film, rays, extra + pixels * pilot_spp as u64)
@@ -233,23 +256,64 @@ fn adaptive_passes(
 
 /// Which samples each pixel takes.
 enum SamplePlan {
+    /// Every pixel takes samples `range` of `spp`; with `one_ray`, one shadow ray per area
+    /// light per sample whatever the render's light sampling.
     Uniform {
         spp: u32,
         range: Range<u32>,
         seed: u64,
+        one_ray: bool,
     },
     /// Adaptive sampling: pixel i takes counts[i] samples (all of its own strata; none
-    /// where the count is 0).
-    PerPixel { counts: Vec<u32>, seed: u64 },
+    /// where the count is 0), with one shadow ray per light per sample where one_ray[i].
+    PerPixel {
+        counts: Vec<u32>,
+        seed: u64,
+        one_ray: Vec<bool>,
+    },
 }
 
-/// The samples each pixel takes after a pilot of `pilot` samples, for `spp` per pixel on
-/// average in all, in proportion to the noise around it (which minimises the summed
-/// variance for a fixed budget): the largest pilot deviation among its eight neighbours. A
-/// pilot of a few samples can miss noise that is there (four light samples that happen to
-/// agree), hence the neighbourhood; the pixel itself is left out so that its count does not
-/// depend on its own samples.
-fn allocate(pilot: &Film, pilot_sq: &[f64], pilot_spp: u32, spp: u32) -> Vec<u32> {
+/// One pixel's part of a plan.
+struct PixelPlan {
+    spp: u32,
+    range: Range<u32>,
+    seed: u64,
+    one_ray: bool,
+}
+
+impl SamplePlan {
+    fn pixel(&self, i: usize) -> PixelPlan {
+        match self {
+            SamplePlan::Uniform {
+                spp,
+                range,
+                seed,
+                one_ray,
+            } => PixelPlan {
+                spp: *spp,
+                range: range.clone(),
+                seed: *seed,
+                one_ray: *one_ray,
+            },
+            SamplePlan::PerPixel {
+                counts,
+                seed,
+                one_ray,
+            } => PixelPlan {
+                spp: counts[i].max(1),
+                range: 0..counts[i],
+                seed: *seed,
+                one_ray: one_ray[i],
+            },
+        }
+    }
+}
+
+/// The noise around each pixel after a pilot of `pilot_spp` samples: the largest pilot
+/// deviation among its eight neighbours. A pilot of a few samples can miss noise that is
+/// there (four light samples that happen to agree), hence the neighbourhood; the pixel
+/// itself is left out so that what is decided from this does not depend on its own samples.
+fn neighbour_noise(pilot: &Film, pilot_sq: &[f64], pilot_spp: u32) -> Vec<f64> {
     let n = pilot_spp as f64;
     let (w, h) = (pilot.width, pilot.height);
     let sigma: Vec<f64> = pilot
@@ -265,7 +329,7 @@ fn allocate(pilot: &Film, pilot_sq: &[f64], pilot_spp: u32, spp: u32) -> Vec<u32
             ((sq - n * mean * mean) / (n - 1.0)).max(0.0).sqrt()
         })
         .collect();
-    let spread: Vec<f64> = (0..w * h)
+    (0..w * h)
         .map(|i| {
             let (x, y) = (i % w, i / w);
             let mut m = 0.0f64;
@@ -278,11 +342,17 @@ fn allocate(pilot: &Film, pilot_sq: &[f64], pilot_spp: u32, spp: u32) -> Vec<u32
             }
             m
         })
-        .collect();
-    let pixels = spread.len() as f64;
+        .collect()
+}
+
+/// The samples each pixel takes after the pilot, for `spp` per pixel on average in all, in
+/// proportion to the noise around it (which minimises the summed variance for a fixed
+/// budget).
+fn allocate(noise: &[f64], pilot_spp: u32, spp: u32) -> Vec<u32> {
+    let pixels = noise.len() as f64;
     let spare = (spp - pilot_spp) as f64 * pixels;
-    let total: f64 = spread.iter().sum();
-    spread
+    let total: f64 = noise.iter().sum();
+    noise
         .iter()
         .map(|s| {
             let extra = if total > 0.0 {
@@ -310,7 +380,12 @@ fn render_pass(
     let total = tiles.len() as u64;
     let done = AtomicU64::new(0);
     let integrator = Integrator::new(scene, options);
-    let layout = integrator.layout();
+    let one_ray_options = RenderOptions {
+        light_samples: LightSamples::Fixed(1),
+        ..options.clone()
+    };
+    let one_ray_integrator = Integrator::new(scene, &one_ray_options);
+    let layout = *integrator.layout();
     let new_sampler = |spp: u32| {
         if options.stratified {
             PixelSampler::new(spp)
@@ -326,16 +401,20 @@ fn render_pass(
         let mut non_finite = Vec::new();
         for y in y0..(y0 + TILE).min(h) {
             for x in x0..(x0 + TILE).min(w) {
-                let (spp, range, seed) = match plan {
-                    SamplePlan::Uniform { spp, range, seed } => (*spp, range.clone(), *seed),
-                    SamplePlan::PerPixel { counts, seed } => {
-                        let n = counts[y * w + x];
-                        (n.max(1), 0..n, *seed)
-                    }
-                };
+                let PixelPlan {
+                    spp,
+                    range,
+                    seed,
+                    one_ray,
+                } = plan.pixel(y * w + x);
                 if sampler.samples_per_pixel() != spp {
                     sampler = new_sampler(spp);
                 }
+                let integrator = if one_ray {
+                    &one_ray_integrator
+                } else {
+                    &integrator
+                };
                 let mut sum = PixelSum::default();
                 let mut square = 0.0;
                 for index in range {
