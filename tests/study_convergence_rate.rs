@@ -30,6 +30,7 @@ fn load(name: &str) -> Scene {
         include_paths: Vec::new(),
         image_width: WIDTH as u32,
         image_height: HEIGHT as u32,
+        ..LoadOptions::default()
     };
     load_scene(&path, &options)
         .unwrap_or_else(|d| panic!("{d}"))
