@@ -131,6 +131,9 @@ struct ReferenceArgs {
     height: u32,
     #[arg(long, default_value_t = 16)]
     supersample: u32,
+    /// The `clock` value (POV-Ray's +K): one frame of an animation.
+    #[arg(long)]
+    clock: Option<f64>,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -451,6 +454,7 @@ fn reference(args: ReferenceArgs) -> Result<ExitCode, String> {
         supersample: args.supersample,
         declares: args.scene_args.declares,
         include_paths: args.scene_args.include_paths,
+        clock: args.clock,
     };
     let reference = render_reference(&request).map_err(text)?;
     write_reference(&args.output, &reference).map_err(text)?;
