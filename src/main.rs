@@ -346,10 +346,16 @@ fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
     for r in reports? {
         if !job.quiet {
             eprintln!(
-                "{}: {}x{}, {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
+                "{}: {}x{}, {} spp{}, {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
                 r.output.display(),
                 r.width,
                 r.height,
+                job.sampling.spp,
+                if job.sampling.adaptive {
+                    " adaptive"
+                } else {
+                    ""
+                },
                 r.stats.wall.as_secs_f64(),
                 r.stats.samples,
                 r.stats.rays_per_second() / 1e6,
