@@ -105,6 +105,10 @@ struct RenderArgs {
     /// +KFIA +KFFB), named scene01.png ... like POV-Ray's.
     #[arg(long, value_name = "A..B")]
     frames: Option<String>,
+    /// With --frames: each frame averages N times spread over its shutter (the frame's clock
+    /// to the next frame's), the scene parsed at each.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    motion_blur: u32,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -403,6 +407,7 @@ impl RenderArgs {
             spp: Some(self.spp),
             seed: self.seed,
             quiet: self.quiet,
+            motion_blur: self.motion_blur.max(1),
             ..PovSettings::default()
         };
         if let Some(frames) = &self.frames {

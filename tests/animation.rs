@@ -113,3 +113,63 @@ fn a_window_holds_exactly_the_full_renders_pixels() {
         println!("adaptive {adaptive}: window {window:?} equals the full render exactly");
     }
 }
+
+/// The render-ready scene is rebuilt for a frame only when its scene changed.
+#[test]
+fn frames_rebuild_the_scene_only_when_it_changes() {
+    for (name, expected) in [
+        ("clock_animation.pov", [true, true, true]),
+        ("checker.pov", [true, false, false]),
+    ] {
+        let scene = root().join("scenes").join(name);
+        let args: Vec<String> = [
+            scene.to_str().expect("utf-8"),
+            "+KFF3",
+            "+W8",
+            "+H6",
+            "--spp",
+            "1",
+        ]
+        .map(str::to_string)
+        .to_vec();
+        let mut job =
+            job(&parse_args(&args, &MemoryFiles::default()).expect("parses")).expect("job");
+        job.write = false;
+        let settings = penumbra::render_job::JobSettings::default();
+        let reports = penumbra::render_job::run_job(&job, &settings, &()).expect("renders");
+        let rebuilt: Vec<bool> = reports.iter().map(|r| r.rebuilt).collect();
+        println!("{name}: rebuilt {rebuilt:?}");
+        assert_eq!(rebuilt, expected, "{name}");
+    }
+}
+
+/// `--motion-blur N` splits a frame's samples over N times of its shutter: a scene that does
+/// not move renders exactly as without it, and one that moves does not.
+#[test]
+fn motion_blur_spreads_the_samples_over_the_shutter() {
+    for (name, same) in [("checker.pov", true), ("clock_animation.pov", false)] {
+        let scene = root().join("scenes").join(name);
+        let render = |blur: &str| {
+            let args: Vec<String> = [
+                scene.to_str().expect("utf-8"),
+                "+KFF3",
+                "+W16",
+                "+H12",
+                "--spp",
+                "8",
+                "--motion-blur",
+                blur,
+            ]
+            .map(str::to_string)
+            .to_vec();
+            let mut job =
+                job(&parse_args(&args, &MemoryFiles::default()).expect("parses")).expect("job");
+            job.write = false;
+            job.frames.truncate(1);
+            penumbra::render_job::render_frame_film(&job, &job.frames[0], &()).expect("renders")
+        };
+        let (sharp, blurred) = (render("1"), render("4"));
+        assert_eq!(sharp.pixels == blurred.pixels, same, "{name}");
+        println!("{name}: motion blur changes the frame: {}", !same);
+    }
+}

@@ -76,6 +76,8 @@ pub struct Job {
     pub library_paths: Vec<PathBuf>,
     pub quiet: bool,
     pub notes: Vec<String>,
+    /// penumbra's `--motion-blur N`: times per frame spread over its shutter (1: none).
+    pub motion_blur: u32,
 }
 
 /// The job the settings describe; errors are the user's (no scene, an empty window).
@@ -110,6 +112,7 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
         library_paths: settings.library_paths.clone(),
         quiet: settings.quiet,
         notes: settings.notes.clone(),
+        motion_blur: settings.motion_blur,
     })
 }
 

@@ -107,6 +107,8 @@ pub struct PovSettings {
     pub spp: Option<u32>,
     pub seed: u64,
     pub quiet: bool,
+    /// `--motion-blur N`.
+    pub motion_blur: u32,
     /// One line per option accepted that does not apply.
     pub notes: Vec<String>,
 }
@@ -133,6 +135,7 @@ impl Default for PovSettings {
             spp: None,
             seed: 0,
             quiet: false,
+            motion_blur: 1,
             notes: Vec::new(),
         }
     }
@@ -428,6 +431,7 @@ impl Reader<'_> {
             Setting::Spp => s.spp = Some(whole(value, 1..=1 << 20)?),
             Setting::Seed => s.seed = value.trim().parse().map_err(|_| not_number(value))?,
             Setting::Quiet => s.quiet = true,
+            Setting::MotionBlur => s.motion_blur = whole(value, 1..=1024)?,
             _ => self.apply_more(option, switch_on, value)?,
         }
         Ok(())

@@ -49,6 +49,8 @@ pub enum Setting {
     Seed,
     /// penumbra's own: `--quiet`.
     Quiet,
+    /// penumbra's own: `--motion-blur N`.
+    MotionBlur,
     /// Accepted with a one-line note: does not apply to penumbra.
     NotApplicable,
 }
@@ -769,6 +771,11 @@ pub const OPTIONS: &[PovOption] = &[
     ),
     own("seed", Seed, "`--seed N`: the sampler's seed"),
     own("quiet", Quiet, "no progress bar, no notes, no summary"),
+    own(
+        "motion-blur",
+        MotionBlur,
+        "`--motion-blur N`: each frame of an animation averages N times spread over its shutter (the frame's clock to the next frame's), parsed at each; POV-Ray 3.7 has no motion blur",
+    ),
 ];
 
 /// The option named by a switch's text after its sign (`W640`, `KFI1`): the longest switch
