@@ -10,7 +10,9 @@ pub mod appearance;
 pub mod geometry;
 pub mod lang;
 pub mod output;
+pub mod povray_args;
 pub mod render;
+pub mod render_job;
 pub mod scene;
 pub mod study;
 

@@ -4,12 +4,14 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{CommandFactory, Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use penumbra::lang::{LoadOptions, load_scene_with};
-use penumbra::output::{BitDepth, write_image};
-use penumbra::render::{AreaLightMode, LightSamples, Progress, RenderOptions, Splitting};
+use penumbra::output::BitDepth;
+use penumbra::povray_args::{self, Job, PovSettings};
+use penumbra::render::{AreaLightMode, LightSamples, RenderOptions, Splitting};
+use penumbra::render_job::{JobProgress, JobSettings, run_job};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
 use penumbra::study::{compare as study_compare, converge as study_converge};
 
@@ -37,6 +39,8 @@ struct SceneArgs {
 #[derive(Subcommand)]
 enum Command {
     /// Render a scene to PNG (sRGB) or OpenEXR (linear), chosen by the output's extension.
+    /// POV-Ray's switches and INI files are read too (`penumbra render scene.pov +W640
+    /// +A0.3`, or without `render`): see docs/cli.md.
     Render(RenderArgs),
     /// Parse and evaluate scenes without rendering, and summarise them.
     Check(CheckArgs),
@@ -98,6 +102,14 @@ struct RenderArgs {
     /// Leave out features penumbra does not support (with a warning) instead of stopping.
     #[arg(long)]
     skip_unsupported: bool,
+    /// Render frames A to B of an animation (`clock` from 0 at A to 1 at B, as POV-Ray's
+    /// +KFIA +KFFB), named scene01.png ... like POV-Ray's.
+    #[arg(long, value_name = "A..B")]
+    frames: Option<String>,
+    /// With --frames: each frame averages N times spread over its shutter (the frame's clock
+    /// to the next frame's), the scene parsed at each.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    motion_blur: u32,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -124,6 +136,9 @@ struct ReferenceArgs {
     height: u32,
     #[arg(long, default_value_t = 16)]
     supersample: u32,
+    /// The `clock` value (POV-Ray's +K): one frame of an animation.
+    #[arg(long)]
+    clock: Option<f64>,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -256,34 +271,61 @@ impl From<Depth> for BitDepth {
 }
 
 fn parse_declare(s: &str) -> Result<(String, f64), String> {
-    let (name, value) = s
-        .split_once('=')
-        .ok_or_else(|| format!("expected NAME=VALUE, got `{s}`"))?;
-    let value: f64 = value
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{value}` is not a number"))?;
-    let name = name.trim();
-    let valid = name
-        .chars()
-        .next()
-        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-    if !valid {
-        return Err(format!("`{name}` is not an identifier"));
-    }
-    Ok((name.to_string(), value))
+    povray_args::parse_declare(s)
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    match run(cli) {
+    let argv: Vec<String> = std::env::args_os()
+        .skip(1)
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    let result = match povray_invocation(&argv) {
+        Some(args) => povray(args),
+        None => run(Cli::parse()),
+    };
+    match result {
         Ok(code) => code,
         Err(message) => {
             eprintln!("{message}");
             ExitCode::FAILURE
         }
     }
+}
+
+/// The arguments to read as POV-Ray's when the command line is a POV-Ray invocation: its
+/// first argument is no subcommand and looks like POV-Ray's (`+W640`, `-D`, `scene.pov`,
+/// `render.ini`, `Width=640`), or it is `render` followed by a `+` switch, an INI file or
+/// a `Key=Value` setting.
+fn povray_invocation(argv: &[String]) -> Option<&[String]> {
+    let first = argv.first()?;
+    let subcommands: Vec<String> = Cli::command()
+        .get_subcommands()
+        .map(|c| c.get_name().to_string())
+        .chain(["help".to_string()])
+        .collect();
+    if first == "render" {
+        let rest = &argv[1..];
+        let povray_style = |a: &String| {
+            a.starts_with('+')
+                || (povray_args::looks_like_povray(a)
+                    && !a.starts_with('-')
+                    && !a.ends_with(".pov"))
+        };
+        return rest.iter().any(povray_style).then_some(rest);
+    }
+    let own =
+        subcommands.contains(first) || first.starts_with("--") || first == "-h" || first == "-V";
+    (!own && povray_args::looks_like_povray(first)).then_some(argv)
+}
+
+/// A POV-Ray command line: its switches and INI files read into a job, and the job run.
+fn povray(args: &[String]) -> Result<ExitCode, String> {
+    let settings = povray_args::parse_args(args, &penumbra::lang::FileSystem).map_err(text)?;
+    let job = povray_args::job::job(&settings).map_err(text)?;
+    if !job.quiet {
+        print_warnings(&job.notes);
+    }
+    render_job(&job, &JobSettings::default())
 }
 
 fn run(cli: Cli) -> Result<ExitCode, String> {
@@ -298,32 +340,39 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
 }
 
 fn render(args: RenderArgs) -> Result<ExitCode, String> {
-    let output = args
-        .output
-        .clone()
-        .unwrap_or_else(|| default_output(&args.scene));
-    let loaded = load_scene_with(
-        &args.scene,
-        &load_options(&args.scene_args, args.width, args.height),
-        args.skip_unsupported,
-    )
-    .map_err(text)?;
-    print_warnings(&loaded.warnings);
-    let bar = progress_bar(!args.quiet && std::io::stderr().is_terminal());
-    let (image, stats) =
-        penumbra::render_scene(&loaded.scene, &args.render_options(), &Bar(bar.clone()))
-            .map_err(text)?;
+    let job = args.job()?;
+    let settings = JobSettings {
+        base: args.render_options(),
+        skip_unsupported: args.skip_unsupported,
+    };
+    render_job(&job, &settings)
+}
+
+/// Runs a job with a progress bar over frames and samples, and a summary line per frame.
+fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
+    let bar = progress_bar(!job.quiet && std::io::stderr().is_terminal());
+    let progress = Bar(bar.clone());
+    let reports = run_job(job, settings, &progress);
     bar.finish_and_clear();
-    write_image(&output, &image, args.bit_depth.into()).map_err(text)?;
-    if !args.quiet {
-        eprintln!(
-            "{}: {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
-            output.display(),
-            stats.wall.as_secs_f64(),
-            stats.samples,
-            stats.rays_per_second() / 1e6,
-            stats.rays.total()
-        );
+    for r in reports? {
+        if !job.quiet {
+            eprintln!(
+                "{}: {}x{}, {} spp{}, {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
+                r.output.display(),
+                r.width,
+                r.height,
+                job.sampling.spp,
+                if job.sampling.adaptive {
+                    " adaptive"
+                } else {
+                    ""
+                },
+                r.stats.wall.as_secs_f64(),
+                r.stats.samples,
+                r.stats.rays_per_second() / 1e6,
+                r.stats.rays.total()
+            );
+        }
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -331,17 +380,58 @@ fn render(args: RenderArgs) -> Result<ExitCode, String> {
 impl RenderArgs {
     fn render_options(&self) -> RenderOptions {
         RenderOptions {
-            width: self.width as usize,
-            height: self.height as usize,
-            samples_per_pixel: self.spp,
-            seed: self.seed,
-            threads: self.threads,
             area_lights: self.area_lights.into(),
             splitting: self.splitting.into(),
             light_samples: self.light_samples,
-            adaptive: self.adaptive,
             ..RenderOptions::default()
         }
+    }
+
+    /// penumbra's own options as the job POV-Ray's would make.
+    fn job(&self) -> Result<Job, String> {
+        let exr = self
+            .output
+            .as_ref()
+            .and_then(|o| o.extension())
+            .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+        let mut settings = PovSettings {
+            input: Some(self.scene.clone()),
+            output: Some(
+                self.output
+                    .clone()
+                    .unwrap_or_else(|| default_output(&self.scene)),
+            ),
+            file_type: if exr { 'E' } else { 'N' },
+            bits_per_colour: match self.bit_depth {
+                Depth::Eight => 8,
+                Depth::Sixteen => 16,
+            },
+            width: self.width,
+            height: self.height,
+            library_paths: self.scene_args.include_paths.clone(),
+            declares: self.scene_args.declares.clone(),
+            threads: self.threads,
+            spp: Some(self.spp),
+            seed: self.seed,
+            quiet: self.quiet,
+            motion_blur: self.motion_blur.max(1),
+            ..PovSettings::default()
+        };
+        if let Some(frames) = &self.frames {
+            let (a, b) = frames
+                .split_once("..")
+                .ok_or_else(|| format!("--frames: expected A..B, got `{frames}`"))?;
+            let frame = |x: &str| {
+                x.trim()
+                    .parse::<i64>()
+                    .map_err(|_| format!("--frames: `{x}` is not a frame number"))
+            };
+            settings.animation.initial_frame = frame(a)?;
+            settings.animation.final_frame = frame(b)?;
+        }
+        let mut job = povray_args::job::job(&settings)?;
+        job.sampling.adaptive = self.adaptive;
+        Ok(job)
     }
 }
 
@@ -382,6 +472,7 @@ fn reference(args: ReferenceArgs) -> Result<ExitCode, String> {
         supersample: args.supersample,
         declares: args.scene_args.declares,
         include_paths: args.scene_args.include_paths,
+        clock: args.clock,
     };
     let reference = render_reference(&request).map_err(text)?;
     write_reference(&args.output, &reference).map_err(text)?;
@@ -469,6 +560,7 @@ fn load_options(args: &SceneArgs, width: u32, height: u32) -> LoadOptions {
         include_paths: args.include_paths.clone(),
         image_width: width,
         image_height: height,
+        ..LoadOptions::default()
     }
 }
 
@@ -496,10 +588,22 @@ fn progress_bar(show: bool) -> ProgressBar {
 
 struct Bar(ProgressBar);
 
-impl Progress for Bar {
-    fn advance(&self, done: u64, total: u64) {
+impl JobProgress for Bar {
+    fn frame(&self, index: usize, count: usize, output: &Path) {
+        if count > 1 {
+            self.0
+                .set_message(format!("frame {}/{count} {}", index + 1, output.display()));
+        }
+        self.0.set_position(0);
+    }
+
+    fn samples(&self, done: u64, total: u64) {
         self.0.set_length(total);
         self.0.set_position(done);
+    }
+
+    fn warnings(&self, warnings: &[penumbra::lang::Diagnostic]) {
+        self.0.suspend(|| print_warnings(warnings));
     }
 }
 

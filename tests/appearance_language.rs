@@ -12,6 +12,7 @@ fn load(source: &str) -> Scene {
         include_paths: Vec::new(),
         image_width: 160,
         image_height: 120,
+        ..LoadOptions::default()
     };
     match load_scene_source("test.pov", source, &options) {
         Ok(l) => l.scene,

@@ -64,6 +64,7 @@ fn pigment(body: &str) -> Pigment {
         include_paths: Vec::new(),
         image_width: SIZE as u32,
         image_height: SIZE as u32,
+        ..LoadOptions::default()
     };
     let loaded =
         load_scene_source("noise.pov", &source, &options).unwrap_or_else(|d| panic!("{d}"));

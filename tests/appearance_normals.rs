@@ -71,6 +71,7 @@ fn texture(normal: &str) -> Texture {
         include_paths: Vec::new(),
         image_width: SIZE as u32,
         image_height: SIZE as u32,
+        ..LoadOptions::default()
     };
     let loaded =
         load_scene_source("normal.pov", &source, &options).unwrap_or_else(|d| panic!("{d}"));

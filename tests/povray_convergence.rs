@@ -40,6 +40,7 @@ fn load(path: &Path) -> Scene {
         include_paths: Vec::new(),
         image_width: WIDTH as u32,
         image_height: HEIGHT as u32,
+        ..LoadOptions::default()
     };
     match load_scene(path, &options) {
         Ok(loaded) => loaded.scene,

@@ -5,7 +5,7 @@
 
 use penumbra::lang::{LoadOptions, load_scene_source};
 use penumbra::output::Image;
-use penumbra::render::RenderOptions;
+use penumbra::render::{LightSamples, RenderOptions};
 
 const SCENE: &str = "#version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -36,6 +36,8 @@ fn variance_map(stratified: bool, spp: u32) -> Vec<f64> {
                 samples_per_pixel: spp,
                 seed: 40 + k,
                 stratified,
+                // The sampler's own strata, one shadow ray per sample: what this test measures.
+                light_samples: LightSamples::Fixed(1),
                 ..RenderOptions::default()
             };
             penumbra::render_scene(&scene, &o, &()).expect("renders").0

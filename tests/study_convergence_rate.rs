@@ -10,7 +10,7 @@
 //!   scene of texture edges must be clearly steeper than -0.6.
 
 use penumbra::lang::{LoadOptions, load_scene};
-use penumbra::render::RenderOptions;
+use penumbra::render::{LightSamples, RenderOptions};
 use penumbra::scene::Scene;
 use penumbra::study::converge::log_log_slope;
 use penumbra::study::noise_variance;
@@ -30,6 +30,7 @@ fn load(name: &str) -> Scene {
         include_paths: Vec::new(),
         image_width: WIDTH as u32,
         image_height: HEIGHT as u32,
+        ..LoadOptions::default()
     };
     load_scene(&path, &options)
         .unwrap_or_else(|d| panic!("{d}"))
@@ -48,6 +49,7 @@ fn noise_slope(scene: &Scene, stratified: bool) -> f64 {
                         samples_per_pixel: spp,
                         seed: 77 + seed,
                         stratified,
+                        light_samples: LightSamples::Fixed(1),
                         ..RenderOptions::default()
                     };
                     penumbra::render_scene(scene, &options, &())

@@ -28,6 +28,40 @@ pub struct LoadOptions {
     /// For the `image_width` / `image_height` identifiers.
     pub image_width: u32,
     pub image_height: u32,
+    /// For the animation identifiers (`clock`, `frame_number`, ...).
+    pub clock: AnimationClock,
+}
+
+/// What the animation identifiers read: `clock`, `clock_delta`, `clock_on`,
+/// `frame_number`, `initial_frame`, `final_frame`, `initial_clock`, `final_clock`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AnimationClock {
+    pub clock: f64,
+    pub clock_delta: f64,
+    /// True while rendering an animation (more than one frame).
+    pub clock_on: bool,
+    pub frame_number: i64,
+    pub initial_frame: i64,
+    pub final_frame: i64,
+    pub initial_clock: f64,
+    pub final_clock: f64,
+}
+
+/// A still: what POV-Ray 3.7 gives without animation options (clock 0, frames 1 to 1, clock
+/// from 0 to 1, frame_number 0).
+impl Default for AnimationClock {
+    fn default() -> Self {
+        AnimationClock {
+            clock: 0.0,
+            clock_delta: 0.0,
+            clock_on: false,
+            frame_number: 0,
+            initial_frame: 1,
+            final_frame: 1,
+            initial_clock: 0.0,
+            final_clock: 1.0,
+        }
+    }
 }
 
 /// 800 x 600 is what the installed POV-Ray 3.7 renders without `+W`/`+H`.
@@ -38,6 +72,7 @@ impl Default for LoadOptions {
             include_paths: Vec::new(),
             image_width: 800,
             image_height: 600,
+            clock: AnimationClock::default(),
         }
     }
 }
@@ -200,6 +235,7 @@ fn evaluate(
         options.image_height,
     );
     ev.skip_unsupported = skip_unsupported;
+    ev.clock = options.clock;
     for (name, value) in &options.declares {
         ev.declare_global(name, eval::value::Value::Float(*value));
     }

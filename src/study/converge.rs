@@ -313,6 +313,7 @@ fn measure_povray(study: &Study, csv: &mut Csv) -> Result<Vec<PovrayRow>, StudyE
         supersample: 2,
         declares: req.declares.clone(),
         include_paths: req.include_paths.clone(),
+        clock: None,
     };
     let mut povray = Vec::new();
     for (setting, args) in POVRAY_SETTINGS {
@@ -386,6 +387,7 @@ fn load(req: &ConvergeRequest, width: usize, height: usize) -> Result<(Scene, f6
         include_paths: req.include_paths.clone(),
         image_width: width as u32,
         image_height: height as u32,
+        ..LoadOptions::default()
     };
     let start = Instant::now();
     let loaded = load_scene(&req.scene, &options).map_err(|d| StudyError::Scene(d.to_string()))?;

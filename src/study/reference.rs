@@ -36,6 +36,8 @@ pub struct ReferenceRequest {
     pub declares: Vec<(String, f64)>,
     /// Extra include folders; the scene's own folder is always searched.
     pub include_paths: Vec<PathBuf>,
+    /// Passed as `+K` (the `clock` of a still): one frame of an animation.
+    pub clock: Option<f64>,
 }
 
 impl ReferenceRequest {
@@ -47,6 +49,7 @@ impl ReferenceRequest {
             supersample,
             declares: Vec::new(),
             include_paths: Vec::new(),
+            clock: None,
         }
     }
 }
@@ -288,6 +291,9 @@ impl PovrayRunner<'_> {
         }
         for path in &self.include_paths {
             command.arg(format!("+L{}", path.display()));
+        }
+        if let Some(clock) = self.req.clock {
+            command.arg(format!("+K{clock}"));
         }
         for (name, value) in &self.req.declares {
             // Rust prints f64 without exponents and with enough digits to round-trip.

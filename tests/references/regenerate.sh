@@ -14,6 +14,10 @@ done
   --output tests/references/area_continuous_n33.exr --declare AreaN=33
 ./target/release/penumbra reference scenes/area_continuous.pov \
   --output tests/references/area_continuous_n2.exr --declare AreaN=2
+# Frame 4 of scenes/clock_animation.pov rendered as +KFI1 +KFF5 (clock 0.75), for
+# tests/animation.rs.
+./target/release/penumbra reference scenes/clock_animation.pov --clock 0.75 \
+  --output tests/references/clock_animation_frame4.exr
 # POV-Ray's own example scenes used by tests/povray_examples.rs (the list there), with
 # their folder on the include path; named after their path with / turned into _.
 P=/usr/share/povray-3.7/scenes

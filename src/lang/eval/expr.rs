@@ -382,11 +382,14 @@ impl Evaluator<'_> {
             })),
             "image_width" => constant(f64::from(self.image_width)),
             "image_height" => constant(f64::from(self.image_height)),
-            "clock" | "clock_delta" | "initial_clock" | "frame_number" | "clock_on" => {
-                constant(0.0)
-            }
-            // No animation: one frame, clock from 0 to 1.
-            "final_clock" | "initial_frame" | "final_frame" => constant(1.0),
+            "clock" => constant(self.clock.clock),
+            "clock_delta" => constant(self.clock.clock_delta),
+            "clock_on" => constant(if self.clock.clock_on { 1.0 } else { 0.0 }),
+            "frame_number" => constant(self.clock.frame_number as f64),
+            "initial_frame" => constant(self.clock.initial_frame as f64),
+            "final_frame" => constant(self.clock.final_frame as f64),
+            "initial_clock" => constant(self.clock.initial_clock),
+            "final_clock" => constant(self.clock.final_clock),
             "version" => constant(self.scene.version),
             _ => None,
         };

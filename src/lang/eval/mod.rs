@@ -69,6 +69,8 @@ pub struct Evaluator<'w> {
     pub debug_output: String,
     /// Shapes (and mesh triangles) made so far, against [`MAX_OBJECTS`].
     object_count: u64,
+    /// The animation identifiers' values.
+    pub clock: crate::lang::AnimationClock,
 }
 
 impl<'w> Evaluator<'w> {
@@ -97,6 +99,7 @@ impl<'w> Evaluator<'w> {
             skip_unsupported: false,
             debug_output: String::new(),
             object_count: 0,
+            clock: crate::lang::AnimationClock::default(),
         }
     }
 

@@ -135,7 +135,7 @@ impl Integrator<'_> {
         if colour == DVec3::ZERO {
             return None;
         }
-        if !light.shadowless {
+        if !light.shadowless && self.quality >= super::QUALITY_SHADOWS {
             let query = ShadowQuery {
                 light,
                 index: index as u32,
@@ -171,7 +171,7 @@ impl Integrator<'_> {
     ) -> Option<crate::render::lights::Incidence> {
         let p = s.surface.point;
         match &light.area {
-            Some(area) if light.area_illumination => {
+            Some(area) if light.area_illumination && self.quality >= super::QUALITY_AREA_LIGHTS => {
                 let dim = self
                     .layout
                     .dimension(s.path.level, Purpose::LightShading(index));
@@ -193,7 +193,8 @@ impl Integrator<'_> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
-        let Some(area) = &q.light.area else {
+        let area = q.light.area.as_ref();
+        let Some(area) = area.filter(|_| self.quality >= super::QUALITY_AREA_LIGHTS) else {
             counts.shadow += 1;
             return self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9));
         };

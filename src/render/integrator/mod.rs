@@ -156,7 +156,16 @@ pub struct Integrator<'a> {
     /// Shadow rays per area light per shading point (more where soft shadows dominate the
     /// noise; each camera sample then costs more).
     light_samples: LightSamples,
+    /// POV-Ray's `+Q` level (see [`RenderOptions::quality`]).
+    quality: u32,
 }
+
+/// `+Q` levels: from these on, POV-Ray shows diffuse light, shadows, area lights, and
+/// reflected and refracted rays.
+pub(super) const QUALITY_LIGHTING: u32 = 2;
+pub(super) const QUALITY_SHADOWS: u32 = 4;
+pub(super) const QUALITY_AREA_LIGHTS: u32 = 5;
+pub(super) const QUALITY_RAYS: u32 = 8;
 
 impl<'a> Integrator<'a> {
     pub fn new(scene: &'a PreparedScene, options: &RenderOptions) -> Integrator<'a> {
@@ -167,6 +176,7 @@ impl<'a> Integrator<'a> {
             splitting: options.splitting,
             area_lights: options.area_lights,
             light_samples: options.light_samples,
+            quality: options.quality,
         }
     }
 
@@ -243,6 +253,10 @@ impl<'a> Integrator<'a> {
         // Layers composite top first: each lets through what its own opacity does not cover.
         let mut through = DVec3::ONE;
         let mut top: Option<(Colour, &Finish)> = None;
+        if self.quality < QUALITY_LIGHTING {
+            // POV-Ray's quick colours: the pigment, fully lit.
+            return layers.iter().next().map_or(DVec3::ZERO, |l| l.colour.rgb);
+        }
         for layer in layers.iter() {
             let c = layer.colour;
             let shaded = ShadedLayer {
@@ -260,7 +274,7 @@ impl<'a> Integrator<'a> {
         let Some((pigment, finish)) = top else {
             return colour;
         };
-        if s.path.level >= self.scene.settings.max_trace_level {
+        if s.path.level >= self.scene.settings.max_trace_level || self.quality < QUALITY_RAYS {
             return colour;
         }
         let top = Top {
