@@ -405,6 +405,22 @@ fn allocate(noise: &[f64], pilot_spp: u32, spp: u32) -> Vec<u32> {
         .collect()
 }
 
+/// The camera ray of the sample `sampler` has started, for pixel (x, y) of a w x h image.
+fn sample_camera_ray(
+    scene: &PreparedScene,
+    layout: &dimensions::DimensionLayout,
+    (x, y, w, h): (usize, usize, usize, usize),
+    sampler: &mut PixelSampler,
+) -> Ray {
+    sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
+    let (u, v) = sampler.get_2d();
+    let sx = (x as f64 + u) / w as f64 - 0.5;
+    let sy = 0.5 - (y as f64 + v) / h as f64;
+    sampler.set_dimension(layout.dimension(0, Purpose::Lens));
+    let lens = sampler.get_2d();
+    camera_ray(&scene.camera, sx, sy, lens)
+}
+
 /// One pass over the image: the film, each pixel's sum of squared luminance (for noise
 /// estimates) and the rays traced.
 fn render_pass(
@@ -478,13 +494,7 @@ fn render_pass(
                 let mut square = 0.0;
                 for index in range {
                     sampler.start(x as u32, y as u32, index, seed);
-                    sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
-                    let (u, v) = sampler.get_2d();
-                    let sx = (x as f64 + u) / w as f64 - 0.5;
-                    let sy = 0.5 - (y as f64 + v) / h as f64;
-                    sampler.set_dimension(layout.dimension(0, Purpose::Lens));
-                    let lens = sampler.get_2d();
-                    let ray = camera_ray(&scene.camera, sx, sy, lens);
+                    let ray = sample_camera_ray(scene, &layout, (x, y, w, h), &mut sampler);
                     let l = integrator.radiance(&ray, &mut sampler, &mut counts);
                     if l.is_finite() {
                         sum.add(l.to_array());
