@@ -13,22 +13,7 @@ use penumbra::study::{self, SQRT_B_THRESHOLD};
 
 #[test]
 fn adaptive_sampling_is_unbiased_and_lowers_the_noise() {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let options = LoadOptions {
-        image_width: 160,
-        image_height: 120,
-        ..LoadOptions::default()
-    };
-    let scene = load_scene(
-        Path::new(&format!("{root}/scenes/soft_shadow.pov")),
-        &options,
-    )
-    .expect("loads")
-    .scene;
-    let reference = study::read_reference(Path::new(&format!(
-        "{root}/tests/references/soft_shadow.exr"
-    )))
-    .expect("reference");
+    let (scene, reference) = soft_shadow();
     let render = |adaptive: bool| -> Vec<Image> {
         (0..4)
             .map(|k| {
@@ -61,22 +46,7 @@ fn adaptive_sampling_is_unbiased_and_lowers_the_noise() {
 
 #[test]
 fn covering_the_light_grid_is_unbiased_and_lowers_the_noise() {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let options = LoadOptions {
-        image_width: 160,
-        image_height: 120,
-        ..LoadOptions::default()
-    };
-    let scene = load_scene(
-        Path::new(&format!("{root}/scenes/soft_shadow.pov")),
-        &options,
-    )
-    .expect("loads")
-    .scene;
-    let reference = study::read_reference(Path::new(&format!(
-        "{root}/tests/references/soft_shadow.exr"
-    )))
-    .expect("reference");
+    let (scene, reference) = soft_shadow();
     let render = |light_samples: LightSamples| -> Vec<Image> {
         (0..4)
             .map(|k| {
@@ -115,4 +85,25 @@ fn covering_the_light_grid_is_unbiased_and_lowers_the_noise() {
         cover.sqrt_v,
         one.sqrt_v
     );
+}
+
+/// scenes/soft_shadow.pov at 160x120 and its committed POV-Ray reference.
+fn soft_shadow() -> (penumbra::scene::Scene, study::reference::Reference) {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let options = LoadOptions {
+        image_width: 160,
+        image_height: 120,
+        ..LoadOptions::default()
+    };
+    let scene = load_scene(
+        Path::new(&format!("{root}/scenes/soft_shadow.pov")),
+        &options,
+    )
+    .expect("loads")
+    .scene;
+    let reference = study::read_reference(Path::new(&format!(
+        "{root}/tests/references/soft_shadow.exr"
+    )))
+    .expect("reference");
+    (scene, reference)
 }
