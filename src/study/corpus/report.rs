@@ -202,7 +202,8 @@ holds its INI file is rendered by POV-Ray with it (its first frame only).
   scene, its local includes, and the library declarations it names, for {keywords}): penumbra's
   noise matches POV-Ray's only in distribution, so per channel and {b}x{b} block, the mean and
   the 10/50/90% quantiles of the mean of the {seeds} seeds are compared with the reference's.
-  A block fails when |d| > 0.005 + 0.02 |S(r)| + {z} SE, with SE^2 the sum of: the replicates'
+  A block fails when |d| > 0.005 + 0.02 |S(r)| (+ 1.28 times the RMS per-pixel noise of the
+  mean, for quantiles, which noise biases outward) + {z} SE, with SE^2 the sum of: the replicates'
   variance of the statistic / K (sampling); the variance of the
   difference over the block's 16 sub-blocks / 4 (the texture: the scene's layout cancels in a
   sub-block's difference, the noise's phase does not; 4, not 16, allows for noise correlated

@@ -237,3 +237,47 @@ fn cheap_scenes_come_first() {
     let costs = vec![(0, 3.0), (1, 0.5), (2, f64::INFINITY), (3, 0.5), (4, 0.0)];
     assert_eq!(sorted_by_cost(costs), vec![4, 1, 3, 0, 2]);
 }
+
+#[test]
+fn the_report_has_every_row_and_the_counts() {
+    let req = CorpusRequest {
+        scenes_dir: PathBuf::from("/scenes"),
+        include_dirs: Vec::new(),
+        only: None,
+        seeds: 4,
+        spp: 64,
+        width: 160,
+        height: 120,
+        supersample: 16,
+        out: PathBuf::from("docs/corpus.md"),
+        cache: PathBuf::from("/cache"),
+        penumbra: PathBuf::from("penumbra"),
+        timeouts: Timeouts::default(),
+        cheap_first: true,
+    };
+    let mut rows = vec![
+        Row::new("a/parsed.pov"),
+        Row::new("a/unsupported.pov"),
+        Row::new("b/broken.pov"),
+    ];
+    rows[0].parse = ParseStatus::Parsed;
+    rows[1].parse = ParseStatus::Unsupported("error: unsupported: `text` | x".into());
+    rows[2].parse = ParseStatus::Parsed;
+    rows[2].outcome = Outcome::RenderFailed("penumbra panicked: boom".into());
+    let context = report::Context {
+        req: &req,
+        povray_version: "POV-Ray 3.7",
+        start: std::time::Instant::now(),
+    };
+    let text = report::markdown(&context, &rows, false);
+    assert!(
+        text.contains("| a/parsed.pov | yes | pixel | not measured yet |"),
+        "{text}"
+    );
+    assert!(text.contains("`text` \\| x"), "pipes are escaped: {text}");
+    assert!(
+        text.contains("| b/broken.pov | yes | pixel | penumbra failed | penumbra panicked: boom")
+    );
+    assert!(text.contains("| parse | 2 |") && text.contains("| penumbra failed to render | 1 |"));
+    assert!(text.contains("interrupted or still running"));
+}
