@@ -13,7 +13,7 @@ use penumbra::povray_args::{self, Job, PovSettings};
 use penumbra::render::{AreaLightMode, LightSamples, RenderOptions, Splitting};
 use penumbra::render_job::{JobProgress, JobSettings, run_job};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
-use penumbra::study::{compare as study_compare, converge as study_converge};
+use penumbra::study::{compare as study_compare, converge as study_converge, corpus};
 
 #[derive(Parser)]
 #[command(
@@ -58,6 +58,9 @@ enum Command {
     /// Error against time: K seeds at each sample count against a reference, optionally
     /// POV-Ray at its quality settings; writes a CSV, charts (SVG, PNG) and a summary.
     Converge(ConvergeArgs),
+    /// Every example scene: parse, render with K seeds, render (or take from the cache)
+    /// POV-Ray's reference, judge pixel by pixel or in distribution, write a markdown table.
+    Corpus(CorpusArgs),
 }
 
 #[derive(clap::Args)]
@@ -139,8 +142,50 @@ struct ReferenceArgs {
     /// The `clock` value (POV-Ray's +K): one frame of an animation.
     #[arg(long)]
     clock: Option<f64>,
+    /// An option for POV-Ray, given before penumbra's own (e.g. an INI file, `+SF1`).
+    #[arg(long = "povray-arg", value_name = "ARG", allow_hyphen_values = true)]
+    povray_args: Vec<String>,
     #[command(flatten)]
     scene_args: SceneArgs,
+}
+
+#[derive(clap::Args)]
+struct CorpusArgs {
+    /// POV-Ray's example scenes.
+    #[arg(long, default_value = "/usr/share/povray-3.7/scenes")]
+    scenes: PathBuf,
+    /// Library includes (for the cache key and the noise scan).
+    #[arg(long, default_value = "/usr/share/povray-3.7/include")]
+    include_dir: Vec<PathBuf>,
+    /// Measure only scenes whose path (relative to --scenes) matches this glob.
+    #[arg(long)]
+    only: Option<String>,
+    #[arg(long, default_value_t = 4)]
+    seeds: u32,
+    #[arg(long, default_value_t = 64)]
+    spp: u32,
+    #[arg(long, default_value_t = 160)]
+    width: u32,
+    #[arg(long, default_value_t = 120)]
+    height: u32,
+    #[arg(long, default_value_t = 16)]
+    supersample: u32,
+    /// The markdown report; failures' PNGs go beside it, in a folder of its name.
+    #[arg(long, default_value = "docs/corpus.md")]
+    out: PathBuf,
+    /// Reference cache (default: $XDG_CACHE_HOME or ~/.cache, then penumbra/corpus).
+    #[arg(long)]
+    cache: Option<PathBuf>,
+    /// Seconds allowed for one parse, one penumbra replicate, one POV-Ray reference.
+    #[arg(long, default_value_t = 30)]
+    parse_timeout: u64,
+    #[arg(long, default_value_t = 300)]
+    render_timeout: u64,
+    #[arg(long, default_value_t = 1200)]
+    reference_timeout: u64,
+    /// Measure in alphabetical order instead of cheapest first (by a 1-sample probe).
+    #[arg(long)]
+    by_name: bool,
 }
 
 #[derive(clap::Args)]
@@ -336,6 +381,7 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
         Command::Compare(args) => compare(args),
         Command::Bench(args) => bench(args),
         Command::Converge(args) => converge(args),
+        Command::Corpus(args) => corpus(args),
     }
 }
 
@@ -473,6 +519,7 @@ fn reference(args: ReferenceArgs) -> Result<ExitCode, String> {
         declares: args.scene_args.declares,
         include_paths: args.scene_args.include_paths,
         clock: args.clock,
+        extra_args: args.povray_args,
     };
     let reference = render_reference(&request).map_err(text)?;
     write_reference(&args.output, &reference).map_err(text)?;
@@ -545,6 +592,48 @@ impl ConvergeArgs {
             adaptive: self.adaptive,
         }
     }
+}
+
+fn corpus(args: CorpusArgs) -> Result<ExitCode, String> {
+    let cache = match args.cache {
+        Some(dir) => dir,
+        None => std::env::var_os("XDG_CACHE_HOME")
+            .map(PathBuf::from)
+            .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))
+            .ok_or("no --cache, and neither XDG_CACHE_HOME nor HOME is set")?
+            .join("penumbra/corpus"),
+    };
+    let request = corpus::CorpusRequest {
+        scenes_dir: args.scenes,
+        include_dirs: args.include_dir,
+        only: args.only,
+        seeds: args.seeds,
+        spp: args.spp,
+        width: args.width,
+        height: args.height,
+        supersample: args.supersample,
+        out: args.out,
+        cache,
+        penumbra: std::env::current_exe().map_err(text)?,
+        timeouts: corpus::Timeouts {
+            parse: args.parse_timeout,
+            render: args.render_timeout,
+            reference: args.reference_timeout,
+        },
+        cheap_first: !args.by_name,
+    };
+    let rows = corpus::run(&request, &StderrLog { quiet: false }).map_err(text)?;
+    let passed = rows
+        .iter()
+        .filter(|r| matches!(&r.outcome, corpus::Outcome::Judged(j) if j.passes()))
+        .count();
+    println!(
+        "{}: {passed} of {} scenes pass; references cached in {}",
+        request.out.display(),
+        rows.len(),
+        request.cache.display()
+    );
+    Ok(ExitCode::SUCCESS)
 }
 
 // What the subcommands share.

@@ -314,6 +314,7 @@ fn measure_povray(study: &Study, csv: &mut Csv) -> Result<Vec<PovrayRow>, StudyE
         declares: req.declares.clone(),
         include_paths: req.include_paths.clone(),
         clock: None,
+        extra_args: Vec::new(),
     };
     let mut povray = Vec::new();
     for (setting, args) in POVRAY_SETTINGS {

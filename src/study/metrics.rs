@@ -510,7 +510,7 @@ fn check_replicates(replicates: &[Image]) -> Result<(), StudyError> {
     Ok(())
 }
 
-fn check_inputs(
+pub(crate) fn check_inputs(
     replicates: &[Image],
     reference: &Image,
     half_reference: &Image,

@@ -6,6 +6,7 @@ pub mod bench;
 pub mod charts;
 pub mod compare;
 pub mod converge;
+pub mod corpus;
 pub mod distribution;
 pub mod metrics;
 pub mod reference;

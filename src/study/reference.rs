@@ -38,6 +38,9 @@ pub struct ReferenceRequest {
     pub include_paths: Vec<PathBuf>,
     /// Passed as `+K` (the `clock` of a still): one frame of an animation.
     pub clock: Option<f64>,
+    /// Options given to POV-Ray before the runner's own (which therefore win over them): an
+    /// INI file the scene needs, `+SF1 +EF1` to render one frame of its animation.
+    pub extra_args: Vec<String>,
 }
 
 impl ReferenceRequest {
@@ -50,6 +53,7 @@ impl ReferenceRequest {
             declares: Vec::new(),
             include_paths: Vec::new(),
             clock: None,
+            extra_args: Vec::new(),
         }
     }
 }
@@ -277,6 +281,7 @@ impl PovrayRunner<'_> {
         // inside the temporary directory and writes there under a relative name.
         command
             .current_dir(self.dir.path())
+            .args(&self.req.extra_args)
             .arg(format!("+I{}", self.scene.display()))
             .arg(format!("+O{output_name}"))
             .arg("+FE")
@@ -305,7 +310,7 @@ impl PovrayRunner<'_> {
             source,
         })?;
         let seconds = start.elapsed().as_secs_f64();
-        let exr_path = self.dir.path().join(&output_name);
+        let exr_path = output_file(self.dir.path(), &output_name);
         if !output.status.success() || !exr_path.is_file() {
             return Err(StudyError::PovrayFailed {
                 scene: self.scene.to_path_buf(),
@@ -338,6 +343,29 @@ impl PovrayRunner<'_> {
             reported_seconds: reported_seconds(&String::from_utf8_lossy(&output.stderr)),
         })
     }
+}
+
+/// `name` in `dir`, or, when an INI made POV-Ray render an animation frame, the file it
+/// named with the frame number inserted before the extension (`render-16001.exr`).
+fn output_file(dir: &Path, name: &str) -> PathBuf {
+    let exact = dir.join(name);
+    if exact.is_file() {
+        return exact;
+    }
+    let stem = name.trim_end_matches(".exr");
+    std::fs::read_dir(dir)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|entry| entry.file_name().to_string_lossy().into_owned())
+        .find(|file| {
+            file.strip_prefix(stem)
+                .and_then(|rest| rest.strip_suffix(".exr"))
+                .is_some_and(|digits| {
+                    !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit())
+                })
+        })
+        .map_or(exact, |file| dir.join(file))
 }
 
 /// Sums the "(N seconds)" of POV-Ray's "... Time:" statistics lines (parse, bounding,

@@ -18,10 +18,12 @@ done
 # tests/animation.rs.
 ./target/release/penumbra reference scenes/clock_animation.pov --clock 0.75 \
   --output tests/references/clock_animation_frame4.exr
-# POV-Ray's own example scenes used by tests/povray_examples.rs (the list there), with
-# their folder on the include path; named after their path with / turned into _.
+# POV-Ray's own example scenes used by tests/povray_examples.rs and tests/corpus_sample.rs
+# (the lists there), with their folder on the include path; named after their path with /
+# turned into _.
 P=/usr/share/povray-3.7/scenes
-grep -o '"[a-z_/0-9]*\.pov"' tests/povray_examples.rs | tr -d '"' | sed 's/\.pov$//' |
+cat tests/povray_examples.rs tests/corpus_sample.rs | grep -o '"[a-z_/0-9]*\.pov"' |
+  tr -d '"' | sed 's/\.pov$//' | sort -u |
 while read -r f; do
   ./target/release/penumbra reference "$P/$f.pov" -L "$P/$(dirname "$f")" \
     --output "tests/references/examples/$(echo "$f" | tr / _).exr"

@@ -1,0 +1,414 @@
+//! The corpus-wide comparison (issue 12): every POV-Ray example scene that penumbra parses is
+//! rendered by penumbra with K seeds and by POV-Ray as a converged reference (k and k/2
+//! times larger without anti-aliasing, as `penumbra reference` does), and judged with the
+//! statistics of testing-statistics.md: pixel by pixel, or, where the scene's textures use
+//! POV-Ray's noise, with a distribution test blind to the noise's phase (`judge`).
+//!
+//! References are cached outside git, keyed by a hash of the scene and the includes it
+//! reads, the size, k and POV-Ray's version string (`scan::ReferenceKey`), so a rerun costs
+//! only penumbra's renders. Every parse, render and reference runs as a child process with
+//! a time limit (`exec`); a failure is a row, never the end of the sweep. `report` writes
+//! the markdown table and the gallery of failures, after every scene, so an interrupted
+//! sweep leaves a complete table whose unreached rows say "not measured yet".
+
+pub mod exec;
+pub mod judge;
+pub mod report;
+pub mod scan;
+
+pub use self::judge::{
+    DistributionVerdict, Judgement, TestKind, distribution_test, judge, mean_image,
+};
+
+use super::converge::Log;
+use super::{StudyError, TempDir, read_reference};
+use crate::output::{Image, read_exr};
+use exec::{Ended, Finished, run_limited};
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// What to sweep and how.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CorpusRequest {
+    /// POV-Ray's example scenes (/usr/share/povray-3.7/scenes).
+    pub scenes_dir: PathBuf,
+    /// Library include folders, searched for the includes that enter the cache key and the
+    /// noise scan (/usr/share/povray-3.7/include).
+    pub include_dirs: Vec<PathBuf>,
+    /// Measure only scenes whose relative path matches (every scene is still parsed).
+    pub only: Option<String>,
+    pub seeds: u32,
+    pub spp: u32,
+    pub width: u32,
+    pub height: u32,
+    /// k of the reference (the k/2 render is kept beside it).
+    pub supersample: u32,
+    /// The markdown table; failures' PNGs go to a folder named after it (docs/corpus/).
+    pub out: PathBuf,
+    /// Where references are cached.
+    pub cache: PathBuf,
+    /// The penumbra executable the children run.
+    pub penumbra: PathBuf,
+    pub timeouts: Timeouts,
+    /// Measure in order of a 1-sample probe render's time, cheapest first, so that an
+    /// interrupted sweep has measured as many scenes as it could (the table stays sorted by
+    /// name).
+    pub cheap_first: bool,
+}
+
+/// Time limits in seconds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Timeouts {
+    pub parse: u64,
+    /// Per penumbra replicate.
+    pub render: u64,
+    /// For POV-Ray's k and k/2 renders together.
+    pub reference: u64,
+}
+
+impl Default for Timeouts {
+    fn default() -> Self {
+        Timeouts {
+            parse: 30,
+            render: 300,
+            reference: 1200,
+        }
+    }
+}
+
+/// The outcome of `penumbra check` on a scene.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ParseStatus {
+    Parsed,
+    /// A feature penumbra lacks; the diagnostic's first line.
+    Unsupported(String),
+    Error(String),
+    Crash(String),
+    TimedOut,
+}
+
+/// What became of a parsed scene.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome {
+    NotMeasured,
+    RenderFailed(String),
+    ReferenceFailed(String),
+    Judged(Box<Judgement>),
+}
+
+/// One scene of the table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// Path relative to the scenes folder.
+    pub scene: String,
+    pub parse: ParseStatus,
+    pub test: TestKind,
+    /// POV-Ray reads this INI with the scene (penumbra has no INI files).
+    pub ini: Option<PathBuf>,
+    pub outcome: Outcome,
+    /// penumbra's K renders, wall time summed.
+    pub penumbra_seconds: Option<f64>,
+    /// POV-Ray's k render (from the cached reference).
+    pub povray_seconds: Option<f64>,
+    pub cached: bool,
+}
+
+impl Row {
+    fn new(scene: &str) -> Row {
+        Row {
+            scene: scene.to_string(),
+            parse: ParseStatus::TimedOut,
+            test: TestKind::Pixel,
+            ini: None,
+            outcome: Outcome::NotMeasured,
+            penumbra_seconds: None,
+            povray_seconds: None,
+            cached: false,
+        }
+    }
+}
+
+/// Parses every scene, measures the selected parsed ones, rewrites the report after each,
+/// and returns the rows.
+pub fn run(req: &CorpusRequest, log: &dyn Log) -> Result<Vec<Row>, StudyError> {
+    let start = Instant::now();
+    let io = |path: &Path| {
+        let path = path.to_path_buf();
+        move |source| StudyError::Io { path, source }
+    };
+    let scenes = scan::list_scenes(&req.scenes_dir).map_err(io(&req.scenes_dir))?;
+    std::fs::create_dir_all(req.cache.join("references")).map_err(io(&req.cache))?;
+    let version = exec::povray_version();
+    let mut rows: Vec<Row> = scenes.iter().map(|s| Row::new(s)).collect();
+    for row in &mut rows {
+        prepare(req, row);
+    }
+    log.line(&format!(
+        "{} scenes, {} parse; POV-Ray: {version}",
+        rows.len(),
+        rows.iter()
+            .filter(|r| r.parse == ParseStatus::Parsed)
+            .count()
+    ));
+    let context = report::Context {
+        req,
+        povray_version: &version,
+        start,
+    };
+    report::write(&context, &rows, false)?;
+    let mut order: Vec<usize> = (0..rows.len())
+        .filter(|&i| rows[i].parse == ParseStatus::Parsed)
+        .filter(|&i| {
+            req.only
+                .as_deref()
+                .is_none_or(|g| scan::glob_match(g, &rows[i].scene))
+        })
+        .collect();
+    if req.cheap_first {
+        let costs: Vec<(usize, f64)> = order.iter().map(|&i| (i, probe(req, &rows[i]))).collect();
+        order = sorted_by_cost(costs);
+        log.line(&format!(
+            "{} scenes to measure, cheapest first",
+            order.len()
+        ));
+    }
+    for i in order {
+        measure(req, &version, &mut rows[i]);
+        log.line(&format!(
+            "{}: {}",
+            rows[i].scene,
+            report::result_text(&rows[i])
+        ));
+        if let Outcome::Judged(j) = &rows[i].outcome
+            && !j.passes()
+        {
+            log.line(&format!("  {}", j.summary()));
+        }
+        report::write(&context, &rows, false)?;
+    }
+    report::write(&context, &rows, true)?;
+    Ok(rows)
+}
+
+/// Parses the scene in a child process and classifies its textures.
+fn prepare(req: &CorpusRequest, row: &mut Row) {
+    let path = req.scenes_dir.join(&row.scene);
+    let folder = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+    let args: Vec<OsString> = vec![
+        "check".into(),
+        "-L".into(),
+        folder.into(),
+        path.clone().into(),
+    ];
+    let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.parse);
+    row.parse = parse_status(&run);
+    if let Ok(files) = scan::sources(&path, &req.include_dirs) {
+        let words = scan::noise_words(&files);
+        if !words.is_empty() {
+            row.test = TestKind::Distribution(words);
+        }
+    }
+    row.ini = scan::ini_for(&path);
+}
+
+/// Sorts `penumbra check`'s outcome as tests/corpus/check-all.sh does.
+pub fn parse_status(run: &Finished) -> ParseStatus {
+    let message = run.message();
+    match &run.ended {
+        Ended::Success => ParseStatus::Parsed,
+        Ended::TimedOut => ParseStatus::TimedOut,
+        Ended::Failed(_) if run.panicked() || run.stderr.contains("signal") => {
+            ParseStatus::Crash(message)
+        }
+        Ended::Failed(_) if message.contains("unsupported") => ParseStatus::Unsupported(message),
+        Ended::Failed(status) if message.is_empty() => ParseStatus::Error(status.clone()),
+        Ended::Failed(_) => ParseStatus::Error(message),
+    }
+}
+
+/// Renders the replicates, fetches or renders the reference, and judges.
+fn measure(req: &CorpusRequest, version: &str, row: &mut Row) {
+    let path = req.scenes_dir.join(&row.scene);
+    let replicates = match render_replicates(req, &path, row) {
+        Ok(images) => images,
+        Err(message) => {
+            row.outcome = Outcome::RenderFailed(message);
+            return;
+        }
+    };
+    let reference = match cached_reference(req, version, &path, row) {
+        Ok(reference) => reference,
+        Err(message) => {
+            row.outcome = Outcome::ReferenceFailed(message);
+            return;
+        }
+    };
+    row.povray_seconds = Some(reference.povray_seconds);
+    row.outcome = match judge(&row.test, &replicates, &reference) {
+        Ok(j) => {
+            if !j.passes() {
+                let mean = mean_image(&replicates);
+                let _ = report::write_gallery_image(req, &row.scene, &mean, &reference.full);
+            }
+            Outcome::Judged(Box::new(j))
+        }
+        Err(e) => Outcome::RenderFailed(format!("cannot judge: {e}")),
+    };
+}
+
+/// Indices sorted by cost, ascending (ties by index).
+pub fn sorted_by_cost(mut costs: Vec<(usize, f64)>) -> Vec<usize> {
+    costs.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+    costs.into_iter().map(|(i, _)| i).collect()
+}
+
+/// Wall time of one 1-sample render of the scene (parse included): the cost estimate of
+/// `cheap_first`. A failing probe costs 0 (its scene fails fast when measured).
+fn probe(req: &CorpusRequest, row: &Row) -> f64 {
+    let path = req.scenes_dir.join(&row.scene);
+    let Ok(dir) = TempDir::new("corpus-probe") else {
+        return 0.0;
+    };
+    let args: Vec<OsString> = vec![
+        "render".into(),
+        path.clone().into(),
+        "--output".into(),
+        dir.path().join("probe.exr").into(),
+        "--width".into(),
+        req.width.to_string().into(),
+        "--height".into(),
+        req.height.to_string().into(),
+        "--spp".into(),
+        "1".into(),
+        "--quiet".into(),
+        "-L".into(),
+        scene_folder(&path),
+    ];
+    let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.render);
+    match run.ended {
+        Ended::Success => run.seconds,
+        Ended::TimedOut => f64::INFINITY,
+        Ended::Failed(_) => 0.0,
+    }
+}
+
+fn scene_folder(path: &Path) -> OsString {
+    path.parent().unwrap_or(Path::new(".")).as_os_str().into()
+}
+
+/// K `penumbra render` children, seeds 100.. (as tests/povray_examples.rs uses).
+fn render_replicates(
+    req: &CorpusRequest,
+    path: &Path,
+    row: &mut Row,
+) -> Result<Vec<Image>, String> {
+    let dir = TempDir::new("corpus").map_err(|e| format!("temporary folder: {e}"))?;
+    let mut images = Vec::new();
+    let mut seconds = 0.0;
+    for k in 0..req.seeds {
+        let output = dir.path().join(format!("seed-{k}.exr"));
+        let args: Vec<OsString> = vec![
+            "render".into(),
+            path.into(),
+            "--output".into(),
+            output.clone().into(),
+            "--width".into(),
+            req.width.to_string().into(),
+            "--height".into(),
+            req.height.to_string().into(),
+            "--spp".into(),
+            req.spp.to_string().into(),
+            "--seed".into(),
+            (100 + u64::from(k)).to_string().into(),
+            "--quiet".into(),
+            "-L".into(),
+            scene_folder(path),
+        ];
+        let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.render);
+        seconds += run.seconds;
+        match &run.ended {
+            Ended::Success => {}
+            Ended::TimedOut => {
+                return Err(format!("penumbra timed out ({} s)", req.timeouts.render));
+            }
+            Ended::Failed(_) if run.panicked() => {
+                return Err(format!("penumbra panicked: {}", run.message()));
+            }
+            Ended::Failed(status) => {
+                return Err(format!("penumbra failed ({status}): {}", run.message()));
+            }
+        }
+        let image = read_exr(&output).map_err(|e| e.to_string())?.image;
+        images.push(image);
+    }
+    row.penumbra_seconds = Some(seconds);
+    Ok(images)
+}
+
+/// The scene's reference from the cache, or rendered by a `penumbra reference` child and
+/// stored there.
+fn cached_reference(
+    req: &CorpusRequest,
+    version: &str,
+    path: &Path,
+    row: &mut Row,
+) -> Result<super::Reference, String> {
+    let files = scan::sources(path, &req.include_dirs).map_err(|e| e.to_string())?;
+    let extra_args = row.ini.as_deref().map(scan::ini_args).unwrap_or_default();
+    let key = scan::ReferenceKey {
+        files: &files,
+        width: req.width,
+        height: req.height,
+        supersample: req.supersample,
+        povray_version: version,
+        extra_args: &extra_args,
+    };
+    let cached = req.cache.join("references").join(key.file_name(&row.scene));
+    if let Ok(reference) = read_reference(&cached) {
+        row.cached = true;
+        return Ok(reference);
+    }
+    let partial = cached.with_extension("partial.exr");
+    let mut args: Vec<OsString> = vec![
+        "reference".into(),
+        path.into(),
+        "--output".into(),
+        partial.clone().into(),
+        "--width".into(),
+        req.width.to_string().into(),
+        "--height".into(),
+        req.height.to_string().into(),
+        "--supersample".into(),
+        req.supersample.to_string().into(),
+        "-L".into(),
+        scene_folder(path),
+    ];
+    args.extend(
+        extra_args
+            .iter()
+            .map(|a| format!("--povray-arg={a}").into()),
+    );
+    let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.reference);
+    match run.ended {
+        Ended::Success => {}
+        Ended::TimedOut => {
+            return Err(format!("POV-Ray timed out ({} s)", req.timeouts.reference));
+        }
+        Ended::Failed(_) => return Err(format!("POV-Ray failed: {}", povray_error(&run))),
+    }
+    std::fs::rename(&partial, &cached).map_err(|e| e.to_string())?;
+    read_reference(&cached).map_err(|e| e.to_string())
+}
+
+/// POV-Ray's own error line, when `penumbra reference` relays one.
+fn povray_error(run: &Finished) -> String {
+    run.stderr
+        .lines()
+        .map(str::trim)
+        .find(|l| l.contains("Parse Error") || l.contains("Error:"))
+        .map_or_else(|| run.message(), str::to_string)
+}
+
+#[cfg(test)]
+mod tests;
