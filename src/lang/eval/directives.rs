@@ -2,7 +2,6 @@
 //! `#switch`), macros and `#include`. They run while the token stream is read, so they may
 //! appear anywhere.
 
-use std::collections::HashMap;
 use std::path::PathBuf;
 use std::rc::Rc;
 
@@ -680,6 +679,7 @@ impl Evaluator<'_> {
             end,
             file,
         };
+        self.special_names = true;
         self.scopes[0].insert(name, Value::Macro(Rc::new(def)));
         Ok(())
     }
@@ -689,7 +689,7 @@ impl Evaluator<'_> {
             return Ok(());
         };
         self.expect(Punct::LParen, &format!("after the macro name `{name}`"))?;
-        let mut locals = HashMap::new();
+        let mut locals = super::stream::Scope::default();
         let mut by_ref = Vec::new();
         let mut i = 0;
         let saved = std::mem::replace(&mut self.in_vector, false);

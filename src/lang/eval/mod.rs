@@ -21,7 +21,6 @@ mod stream;
 mod texture;
 pub mod value;
 
-use std::collections::HashMap;
 use std::path::PathBuf;
 use std::rc::Rc;
 
@@ -30,7 +29,7 @@ use crate::scene::Scene;
 use super::SourceFiles;
 use super::diagnostics::{Diagnostic, Files, Span};
 use super::syntax::{Punct, Token, TokenKind};
-use stream::{Cond, Frame};
+use stream::{Cond, Frame, Scope};
 use value::Value;
 
 /// Deeper nesting than this (blocks, parentheses, macro calls, includes) is reported rather
@@ -50,7 +49,10 @@ pub struct Evaluator<'w> {
     pub files: Files,
     frames: Vec<Frame>,
     conds: Vec<Cond>,
-    scopes: Vec<HashMap<Rc<str>, Value>>,
+    scopes: Vec<Scope>,
+    /// Whether any scope may hold a macro or an unsupported value, which the token stream
+    /// must act on when it meets their names; until then names pass unlooked-up.
+    special_names: bool,
     pub scene: Scene,
     pub warnings: Vec<Diagnostic>,
     depth: usize,
@@ -83,7 +85,8 @@ impl<'w> Evaluator<'w> {
             files: Files::default(),
             frames: Vec::new(),
             conds: Vec::new(),
-            scopes: vec![HashMap::new()],
+            scopes: vec![Scope::default()],
+            special_names: false,
             scene: Scene::default(),
             warnings: Vec::new(),
             depth: 0,
@@ -101,6 +104,9 @@ impl<'w> Evaluator<'w> {
     }
 
     pub fn declare_global(&mut self, name: &str, value: Value) {
+        if value.needs_check_in_stream() {
+            self.special_names = true;
+        }
         self.scopes[0].insert(Rc::from(name), value);
     }
 
