@@ -69,9 +69,10 @@ fn pigment(body: &str) -> Pigment {
         load_scene_source("noise.pov", &source, &options).unwrap_or_else(|d| panic!("{d}"));
     loaded.scene.objects[0]
         .texture
-        .clone()
+        .as_ref()
         .expect("texture")
         .pigment
+        .clone()
 }
 
 /// The grey value at POV-Ray's pixel centres (row 0 at the top).

@@ -74,7 +74,7 @@ fn texture(normal: &str) -> Texture {
     };
     let loaded =
         load_scene_source("normal.pov", &source, &options).unwrap_or_else(|d| panic!("{d}"));
-    loaded.scene.objects[0].texture.clone().expect("texture")
+    std::sync::Arc::unwrap_or_clone(loaded.scene.objects[0].texture.clone().expect("texture"))
 }
 
 /// The perturbed normal facing the camera (-z) at POV-Ray's pixel centres, row 0 at the top.

@@ -433,6 +433,8 @@ impl Evaluator<'_> {
                 }
                 _ => return Err(self.stray_in_block(&tok, "`#default`")),
             }
+            self.changed_default = (self.default_texture != crate::scene::Texture::default())
+                .then(|| std::sync::Arc::new(self.default_texture.clone()));
         }
         let _ = open;
         // Not `expect`: reading past the `}` would run the next directive too early.

@@ -88,9 +88,10 @@ impl Evaluator<'_> {
         if let Some(mut object) = o.object {
             // Only a changed default needs writing down: `None` already means the built-in
             // default texture to the renderer.
-            if object.texture.is_none() && self.default_texture != crate::scene::Texture::default()
+            if object.texture.is_none()
+                && let Some(shared) = &self.changed_default
             {
-                object.texture = Some(self.default_texture.clone());
+                object.texture = Some(shared.clone());
             }
             self.scene.objects.push(object);
         }
@@ -142,7 +143,10 @@ impl Evaluator<'_> {
                 self.next()?;
                 let mut holder = crate::scene::Object::new(crate::scene::Shape::Union(Vec::new()));
                 self.material_body(&mut holder)?;
-                Value::Material(Box::new((holder.texture, holder.interior)))
+                Value::Material(Box::new((
+                    holder.texture.map(std::sync::Arc::unwrap_or_clone),
+                    holder.interior,
+                )))
             }
             "transform" => {
                 self.next()?;

@@ -65,6 +65,10 @@ pub struct Evaluator<'w> {
     in_vector: bool,
     /// What new textures start from; `#default` changes it.
     default_texture: crate::scene::Texture,
+    /// The default texture, shared, once `#default` made it differ from the built-in one.
+    changed_default: Option<std::sync::Arc<crate::scene::Texture>>,
+    /// The texture an object got last: the next object with an equal one shares it.
+    last_texture: Option<std::sync::Arc<crate::scene::Texture>>,
     /// `--skip-unsupported`: unsupported features become warnings and are left out.
     pub skip_unsupported: bool,
     /// What `#debug` printed, in order.
@@ -97,6 +101,8 @@ impl<'w> Evaluator<'w> {
             rng_states: Vec::new(),
             in_vector: false,
             default_texture: crate::scene::Texture::default(),
+            changed_default: None,
+            last_texture: None,
             skip_unsupported: false,
             debug_output: String::new(),
             object_count: 0,
@@ -218,6 +224,22 @@ impl<'w> Evaluator<'w> {
             d = d.with_hint(format!("did you mean `{best}`?"));
         }
         d
+    }
+
+    /// A texture for an object: the last one handed out when equal (objects made by a loop
+    /// share one), else a new shared one.
+    fn share_texture(
+        &mut self,
+        texture: crate::scene::Texture,
+    ) -> std::sync::Arc<crate::scene::Texture> {
+        if let Some(last) = &self.last_texture
+            && **last == texture
+        {
+            return last.clone();
+        }
+        let shared = std::sync::Arc::new(texture);
+        self.last_texture = Some(shared.clone());
+        shared
     }
 
     /// Counts shapes made, so a loop cannot fill memory with objects unnoticed.

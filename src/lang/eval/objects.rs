@@ -2,6 +2,8 @@
 //! they are met (see `Object::transform_by`): a texture attached before a transform moves
 //! with it, one attached after does not.
 
+use std::sync::Arc;
+
 use glam::{DAffine3, DMat3, DVec3};
 
 use super::super::diagnostics::Diagnostic;
@@ -391,11 +393,11 @@ impl Evaluator<'_> {
                     let top = self.texture_body(self.default_texture.clone())?;
                     // A second `texture` layers over the first; the first replaces the default.
                     let below = if textures > 1 {
-                        object.texture.take()
+                        object.texture.take().map(Arc::unwrap_or_clone)
                     } else {
                         None
                     };
-                    object.texture = Some(Self::layer_texture(below, top));
+                    object.texture = Some(self.share_texture(Self::layer_texture(below, top)));
                     true
                 }
                 "clipped_by" => {
@@ -460,8 +462,9 @@ impl Evaluator<'_> {
         let texture = object
             .texture
             .take()
-            .unwrap_or_else(|| self.default_texture.clone());
-        object.texture = Some(edit(self, texture)?);
+            .map_or_else(|| self.default_texture.clone(), Arc::unwrap_or_clone);
+        let edited = edit(self, texture)?;
+        object.texture = Some(self.share_texture(edited));
         Ok(())
     }
 
@@ -800,7 +803,8 @@ impl Evaluator<'_> {
             match tok.ident() {
                 Some("texture") => {
                     ev.next()?;
-                    object.texture = Some(ev.texture_body(ev.default_texture.clone())?);
+                    let t = ev.texture_body(ev.default_texture.clone())?;
+                    object.texture = Some(ev.share_texture(t));
                 }
                 Some("interior") => {
                     ev.next()?;
@@ -815,8 +819,8 @@ impl Evaluator<'_> {
                             ev.err(s, format!("expected a material, found {}", v.kind_name()))
                         );
                     };
-                    if m.0.is_some() {
-                        object.texture = m.0;
+                    if let Some(t) = m.0 {
+                        object.texture = Some(ev.share_texture(t));
                     }
                     if m.1.is_some() {
                         object.interior = m.1;
@@ -825,7 +829,7 @@ impl Evaluator<'_> {
                 _ => match ev.transform_modifier()? {
                     Some(t) => {
                         if let Some(texture) = &mut object.texture {
-                            texture.transform_by(&t);
+                            Arc::make_mut(texture).transform_by(&t);
                         }
                     }
                     None => return Err(ev.stray_in_block(tok, "the material")),
