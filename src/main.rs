@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use penumbra::lang::{LoadOptions, load_scene_with};
+use penumbra::lang::{LoadOptions, load_scene_with, parse_memory_size};
 use penumbra::output::{BitDepth, write_image};
 use penumbra::render::{AreaLightMode, Progress, RenderOptions, Splitting};
 use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
@@ -97,6 +97,10 @@ struct RenderArgs {
     /// Leave out features penumbra does not support (with a warning) instead of stopping.
     #[arg(long)]
     skip_unsupported: bool,
+    /// Memory the scene's objects and values may take (e.g. 2G, 512M); default: the smaller
+    /// of half the physical memory and the address-space limit.
+    #[arg(long, value_name = "SIZE", value_parser = parse_memory_size)]
+    max_memory: Option<u64>,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -108,6 +112,10 @@ struct CheckArgs {
     /// Leave out features penumbra does not support (with a warning) instead of stopping.
     #[arg(long)]
     skip_unsupported: bool,
+    /// Memory the scene's objects and values may take (e.g. 2G, 512M); default: the smaller
+    /// of half the physical memory and the address-space limit.
+    #[arg(long, value_name = "SIZE", value_parser = parse_memory_size)]
+    max_memory: Option<u64>,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -297,7 +305,7 @@ fn render(args: RenderArgs) -> Result<ExitCode, String> {
         .unwrap_or_else(|| default_output(&args.scene));
     let loaded = load_scene_with(
         &args.scene,
-        &load_options(&args.scene_args, args.width, args.height),
+        &load_options(&args.scene_args, args.width, args.height, args.max_memory),
         args.skip_unsupported,
     )
     .map_err(text)?;
@@ -343,7 +351,7 @@ impl RenderArgs {
 fn check(args: CheckArgs) -> ExitCode {
     let mut failed = false;
     for path in &args.scenes {
-        let options = load_options(&args.scene_args, 320, 240);
+        let options = load_options(&args.scene_args, 320, 240, args.max_memory);
         match load_scene_with(path, &options, args.skip_unsupported) {
             Ok(loaded) => {
                 eprint!("{}", loaded.debug);
@@ -454,8 +462,9 @@ fn text(error: impl std::fmt::Display) -> String {
     error.to_string()
 }
 
-fn load_options(args: &SceneArgs, width: u32, height: u32) -> LoadOptions {
+fn load_options(args: &SceneArgs, width: u32, height: u32, max_memory: Option<u64>) -> LoadOptions {
     LoadOptions {
+        max_memory,
         declares: args.declares.clone(),
         include_paths: args.include_paths.clone(),
         image_width: width,

@@ -8,10 +8,9 @@ use penumbra::scene::Scene;
 
 fn load(source: &str) -> Scene {
     let options = LoadOptions {
-        declares: Vec::new(),
-        include_paths: Vec::new(),
         image_width: 160,
         image_height: 120,
+        ..LoadOptions::default()
     };
     match load_scene_source("test.pov", source, &options) {
         Ok(l) => l.scene,

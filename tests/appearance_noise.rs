@@ -60,10 +60,9 @@ fn pigment(body: &str) -> Pigment {
         "#version 3.7;\nplane {{ z, 0 pigment {{ {body} color_map {{ [0 rgb 0] [1 rgb 1] }} }} }}\n"
     );
     let options = LoadOptions {
-        declares: Vec::new(),
-        include_paths: Vec::new(),
         image_width: SIZE as u32,
         image_height: SIZE as u32,
+        ..LoadOptions::default()
     };
     let loaded =
         load_scene_source("noise.pov", &source, &options).unwrap_or_else(|d| panic!("{d}"));

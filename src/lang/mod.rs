@@ -18,6 +18,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 pub use diagnostics::{Diagnostic, Severity, Span};
+pub use eval::budget::{default_memory_budget, parse_memory_size};
 
 /// Settings from the command line that the scene can see.
 #[derive(Clone, Debug)]
@@ -28,6 +29,9 @@ pub struct LoadOptions {
     /// For the `image_width` / `image_height` identifiers.
     pub image_width: u32,
     pub image_height: u32,
+    /// Bytes the scene's objects and values may take (`--max-memory`); `None`: the default,
+    /// [`default_memory_budget`].
+    pub max_memory: Option<u64>,
 }
 
 /// 800 x 600 is what the installed POV-Ray 3.7 renders without `+W`/`+H`.
@@ -38,6 +42,7 @@ impl Default for LoadOptions {
             include_paths: Vec::new(),
             image_width: 800,
             image_height: 600,
+            max_memory: None,
         }
     }
 }
@@ -200,6 +205,7 @@ fn evaluate(
         options.image_height,
     );
     ev.skip_unsupported = skip_unsupported;
+    ev.set_memory_budget(options.max_memory.unwrap_or_else(default_memory_budget));
     for (name, value) in &options.declares {
         ev.declare_global(name, eval::value::Value::Float(*value));
     }

@@ -382,6 +382,7 @@ fn load(req: &ConvergeRequest, width: usize, height: usize) -> Result<(Scene, f6
         include_paths: req.include_paths.clone(),
         image_width: width as u32,
         image_height: height as u32,
+        max_memory: None,
     };
     let start = Instant::now();
     let loaded = load_scene(&req.scene, &options).map_err(|d| StudyError::Scene(d.to_string()))?;

@@ -591,6 +591,12 @@ impl Evaluator<'_> {
         if total > MAX_ARRAY_ELEMENTS {
             return Err(self.err(kw.span, "this array is too large"));
         }
+        let bytes = total.saturating_mul(std::mem::size_of::<Option<Value>>());
+        self.charge(
+            bytes as u64,
+            super::budget::Growth::ArrayElements(total),
+            kw.span,
+        )?;
         let mut items = vec![None; total];
         if self.raw_peek(0).is_some_and(|t| t.is_punct(Punct::LBrace)) {
             let mut flat = Vec::new();

@@ -47,7 +47,7 @@ impl Evaluator<'_> {
             }
             _ if super::objects::is_object_keyword(word) => {
                 let o = self.object()?;
-                self.add_object(o);
+                self.add_object(o, tok.span)?;
             }
             _ if UNSUPPORTED_ITEMS.contains(&word) => {
                 let word = word.to_string();
@@ -84,7 +84,7 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    pub(super) fn add_object(&mut self, o: ObjectValue) {
+    pub(super) fn add_object(&mut self, o: ObjectValue, span: crate::lang::Span) -> R<()> {
         if let Some(mut object) = o.object {
             // Only a changed default needs writing down: `None` already means the built-in
             // default texture to the renderer.
@@ -93,9 +93,18 @@ impl Evaluator<'_> {
             {
                 object.texture = Some(shared.clone());
             }
+            let objects = &mut self.scene.objects;
+            if objects.len() == objects.capacity() {
+                // The list doubles: its new capacity is charged (its slack included).
+                let more = objects.capacity().max(64);
+                let bytes = (more * std::mem::size_of::<crate::scene::Object>()) as u64;
+                self.charge(bytes, super::budget::Growth::Objects(0), span)?;
+                self.scene.objects.reserve_exact(more);
+            }
             self.scene.objects.push(object);
         }
         self.scene.lights.extend(o.lights);
+        Ok(())
     }
 
     /// What may follow `#declare Name =`.

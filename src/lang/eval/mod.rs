@@ -11,6 +11,7 @@
 //! includes), `expr` (expressions), `functions` (the table of built-in functions), `items` (camera, lights, global
 //! settings), `objects` (shapes, CSG, modifiers), `texture` (pigment, finish, texture).
 
+pub mod budget;
 mod directives;
 mod expr;
 mod functions;
@@ -35,8 +36,6 @@ use value::Value;
 /// Deeper nesting than this (blocks, parentheses, macro calls, includes) is reported rather
 /// than risking the stack.
 pub const MAX_DEPTH: usize = 256;
-/// Shapes and mesh triangles in a scene: beyond this a scene would exhaust memory first.
-pub const MAX_OBJECTS: u64 = 20_000_000;
 /// Total loop iterations in a scene, so an endless `#while` ends with an error.
 #[cfg(not(test))]
 pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
@@ -73,8 +72,8 @@ pub struct Evaluator<'w> {
     pub skip_unsupported: bool,
     /// What `#debug` printed, in order.
     pub debug_output: String,
-    /// Shapes (and mesh triangles) made so far, against [`MAX_OBJECTS`].
-    object_count: u64,
+    /// What the scene's objects and values take, against the memory budget.
+    budget: budget::Budget,
 }
 
 impl<'w> Evaluator<'w> {
@@ -105,7 +104,7 @@ impl<'w> Evaluator<'w> {
             last_texture: None,
             skip_unsupported: false,
             debug_output: String::new(),
-            object_count: 0,
+            budget: budget::Budget::new(budget::default_memory_budget()),
         }
     }
 
@@ -237,18 +236,24 @@ impl<'w> Evaluator<'w> {
         {
             return last.clone();
         }
+        // Charged when it is known: an error here would change nothing.
+        let size = std::mem::size_of::<crate::scene::Texture>() as u64;
+        self.budget.used = self.budget.used.saturating_add(size);
         let shared = std::sync::Arc::new(texture);
         self.last_texture = Some(shared.clone());
         shared
     }
 
-    /// Counts shapes made, so a loop cannot fill memory with objects unnoticed.
-    fn count_objects(&mut self, n: u64, span: Span) -> Result<(), Diagnostic> {
-        self.object_count = self.object_count.saturating_add(n);
-        if self.object_count > MAX_OBJECTS {
-            return Err(self.err(span, format!("too many objects (more than {MAX_OBJECTS})")));
-        }
-        Ok(())
+    /// Sets the memory budget (bytes) the scene's objects and values may take.
+    pub fn set_memory_budget(&mut self, bytes: u64) {
+        self.budget.limit = bytes;
+    }
+
+    /// Counts `n` shapes (or mesh triangles) made of `bytes_each`, against the memory
+    /// budget, so a loop cannot fill memory with objects unnoticed.
+    fn count_objects(&mut self, n: u64, bytes_each: usize, span: Span) -> Result<(), Diagnostic> {
+        let bytes = n.saturating_mul(bytes_each as u64);
+        self.charge(bytes, budget::Growth::Objects(n), span)
     }
 
     /// An unsupported feature at `tok`: an error, or with `--skip-unsupported` a warning,

@@ -102,7 +102,7 @@ impl Evaluator<'_> {
         let word = kw.ident().unwrap_or("").to_string();
         let open = self.block_start(&word)?;
         let what = the(&kw);
-        self.count_objects(1, kw.span)?;
+        self.count_objects(1, std::mem::size_of::<Object>(), kw.span)?;
         let read = match SHAPES.iter().find(|(name, _)| *name == word) {
             Some((_, reader)) => reader(self, &kw)?,
             None => self.object_reference()?,
@@ -711,7 +711,8 @@ impl Evaluator<'_> {
                         return Err(self.stray_in_block(&t, "the mesh triangle"));
                     }
                     self.block_end(open, "the mesh triangle")?;
-                    self.count_objects(1, tok.span)?;
+                    let size = std::mem::size_of::<crate::scene::MeshTriangle>();
+                    self.count_objects(1, size, tok.span)?;
                     if !degenerate {
                         mesh.triangles.push(crate::scene::MeshTriangle {
                             corners: tri.corners,
@@ -753,7 +754,7 @@ impl Evaluator<'_> {
             ));
         }
         let n = n as usize;
-        self.count_objects(n as u64 / 16, s)?;
+        self.count_objects(1, n * std::mem::size_of::<DVec3>(), s)?;
         let mut points = Vec::with_capacity(n.min(1 << 16));
         let mut first = 0;
         for i in 0..n {
