@@ -19,13 +19,13 @@ const MAX_DEBUG_BYTES: usize = 1 << 20;
 const MAX_ARRAY_ELEMENTS: usize = 1_000_000;
 
 impl Evaluator<'_> {
-    pub(super) fn directive(&mut self, name: Rc<str>, span: Span) -> R<()> {
+    pub(super) fn directive(&mut self, name: &'static str, span: Span) -> R<()> {
         let tok = Token {
-            kind: TokenKind::Directive(name.clone()),
+            kind: TokenKind::Directive(name),
             span,
         };
         self.enter(span)?;
-        let r = self.directive_inner(&name, &tok);
+        let r = self.directive_inner(name, &tok);
         self.leave();
         r
     }
@@ -73,7 +73,7 @@ impl Evaluator<'_> {
     /// `#version 3.7;`: a number as written is read raw, so the directive takes effect before
     /// the next token is read.
     fn version_directive(&mut self) -> R<()> {
-        let v = match self.raw_peek(0).map(|t| t.kind.clone()) {
+        let v = match self.raw_peek(0).map(|t| t.kind) {
             Some(TokenKind::Number(n)) => {
                 self.raw_next();
                 n
@@ -353,7 +353,7 @@ impl Evaluator<'_> {
         self.frames
             .last()
             .and_then(|f| f.tokens.get(pos.wrapping_sub(1)))
-            .is_some_and(|t| t.kind == TokenKind::Directive(Rc::from("range")))
+            .is_some_and(|t| t.kind == TokenKind::Directive("range"))
     }
 
     /// `#case (v)` or `#range (a, b)` against the innermost `#switch` value.
@@ -692,8 +692,8 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    pub(super) fn call_macro(&mut self, name: Rc<str>, span: Span) -> R<()> {
-        let Some(Value::Macro(def)) = self.lookup(&name).cloned() else {
+    pub(super) fn call_macro(&mut self, name: &str, span: Span) -> R<()> {
+        let Some(Value::Macro(def)) = self.lookup(name).cloned() else {
             return Ok(());
         };
         self.expect(Punct::LParen, &format!("after the macro name `{name}`"))?;
@@ -754,10 +754,10 @@ impl Evaluator<'_> {
 
     fn include(&mut self, span: Span) -> R<()> {
         // A plain string is taken as is, so the directive after it waits for the include.
-        let (v, s) = match self.raw_peek(0).map(|t| (t.kind.clone(), t.span)) {
+        let (v, s) = match self.raw_peek(0).map(|t| (t.kind, t.span)) {
             Some((TokenKind::Str(name), s)) => {
                 self.raw_next();
-                (Value::Str(name), s)
+                (Value::Str(Rc::from(name)), s)
             }
             _ => self.expr()?,
         };

@@ -257,11 +257,11 @@ impl Evaluator<'_> {
                 self.pop_frame();
                 continue;
             }
-            let tok = frame.tokens[frame.pos].clone();
+            let tok = frame.tokens[frame.pos];
             match &tok.kind {
                 TokenKind::Directive(name) => {
                     self.advance();
-                    self.directive(name.clone(), tok.span)?;
+                    self.directive(name, tok.span)?;
                 }
                 // Most names are keywords or plain values: only look them up when some
                 // scope may hold a macro or an unsupported value.
@@ -269,7 +269,7 @@ impl Evaluator<'_> {
                 TokenKind::Ident(name) => match self.lookup(name) {
                     Some(Value::Macro(_)) => {
                         self.advance();
-                        self.call_macro(name.clone(), tok.span)?;
+                        self.call_macro(name, tok.span)?;
                     }
                     Some(Value::Unsupported(original)) => {
                         let mut d = self.err(tok.span, original.message.clone());
@@ -303,7 +303,7 @@ impl Evaluator<'_> {
                 if let Some(tok) = frame.tokens.get(frame.pos)
                     && matches!(tok.kind, TokenKind::Directive(_) | TokenKind::Ident(_))
                 {
-                    return Ok(tok.clone());
+                    return Ok(*tok);
                 }
                 break;
             }
@@ -358,7 +358,7 @@ impl Evaluator<'_> {
             };
         }
         frame.pos += 1;
-        frame.tokens[frame.pos - 1].clone()
+        frame.tokens[frame.pos - 1]
     }
 
     pub(super) fn raw_peek(&self, ahead: usize) -> Option<&Token> {
