@@ -169,6 +169,16 @@ struct BenchArgs {
     width: u32,
     #[arg(long, default_value_t = 240)]
     height: u32,
+    /// Only the parse section: the `#while` evaluation and the model's bytes per sphere
+    /// against POV-Ray's parse time.
+    #[arg(long)]
+    parse: bool,
+    /// Sphere counts (N x N grids) for `--parse`.
+    #[arg(long, value_delimiter = ',', default_values_t = [10_000usize, 100_000, 1_000_000])]
+    parse_counts: Vec<usize>,
+    /// Runs of each for `--parse`; medians are printed.
+    #[arg(long, default_value_t = 3)]
+    parse_repeats: usize,
 }
 
 #[derive(clap::Args)]
@@ -413,6 +423,12 @@ fn compare(args: CompareArgs) -> Result<ExitCode, String> {
 }
 
 fn bench(args: BenchArgs) -> Result<ExitCode, String> {
+    if args.parse {
+        penumbra::study::parse_bench::run(&args.parse_counts, args.parse_repeats, |line| {
+            println!("{line}");
+        });
+        return Ok(ExitCode::SUCCESS);
+    }
     let options = penumbra::study::bench::BenchOptions {
         counts: args.counts,
         rays: args.rays,
