@@ -98,7 +98,7 @@ impl Token {
         self.kind == TokenKind::Punct(p)
     }
 
-    pub fn ident(&self) -> Option<&str> {
+    pub fn ident(&self) -> Option<Name> {
         match &self.kind {
             TokenKind::Ident(s) => Some(s),
             _ => None,

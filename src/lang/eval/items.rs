@@ -174,7 +174,7 @@ impl Evaluator<'_> {
     /// `keyword {`: consumes both and returns the brace token for error messages.
     pub(super) fn block_start(&mut self, keyword: &str) -> R<Token> {
         self.next()?;
-        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
+        let open = self.expect_lazy(Punct::LBrace, || format!("after `{keyword}`"))?;
         self.enter(open.span)?;
         Ok(open)
     }
@@ -182,7 +182,7 @@ impl Evaluator<'_> {
     /// The closing brace of a block opened with [`Evaluator::block_start`].
     pub(super) fn block_end(&mut self, _open: Token, what: &str) -> R<()> {
         self.leave();
-        self.expect(Punct::RBrace, &format!("to close {what}"))?;
+        self.expect_lazy(Punct::RBrace, || format!("to close {what}"))?;
         Ok(())
     }
 

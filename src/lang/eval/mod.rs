@@ -173,6 +173,21 @@ impl<'w> Evaluator<'w> {
         }
     }
 
+    /// [`Evaluator::expect`] with the context written only when it is needed.
+    fn expect_lazy(
+        &mut self,
+        p: Punct,
+        context: impl FnOnce() -> String,
+    ) -> Result<Token, Diagnostic> {
+        let tok = self.peek()?;
+        if tok.is_punct(p) {
+            self.next()?;
+            Ok(tok)
+        } else {
+            self.expect(p, &context())
+        }
+    }
+
     fn eat(&mut self, p: Punct) -> Result<bool, Diagnostic> {
         if self.peek()?.is_punct(p) {
             self.next()?;

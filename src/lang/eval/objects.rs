@@ -99,8 +99,8 @@ impl Evaluator<'_> {
     /// An object starting at its keyword (`sphere`, `union`, `object`, ...).
     pub(super) fn object(&mut self) -> R<ObjectValue> {
         let kw = self.peek()?;
-        let word = kw.ident().unwrap_or("").to_string();
-        let open = self.block_start(&word)?;
+        let word = kw.ident().unwrap_or("");
+        let open = self.block_start(word)?;
         let what = the(&kw);
         self.count_objects(1, std::mem::size_of::<Object>(), kw.span)?;
         let read = match SHAPES.iter().find(|(name, _)| *name == word) {

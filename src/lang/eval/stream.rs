@@ -299,10 +299,9 @@ impl Evaluator<'_> {
         while let Some(frame) = self.frames.last() {
             if frame.pos < frame.end {
                 // Neither a directive nor a name (a macro call, say) can continue an
-                // expression, so neither is run here.
-                if let Some(tok) = frame.tokens.get(frame.pos)
-                    && matches!(tok.kind, TokenKind::Directive(_) | TokenKind::Ident(_))
-                {
+                // expression, so neither is run here; any other token is what `peek`
+                // would return.
+                if let Some(tok) = frame.tokens.get(frame.pos) {
                     return Ok(*tok);
                 }
                 break;
