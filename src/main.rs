@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::{CommandFactory, Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use penumbra::lang::{LoadOptions, load_scene_with};
+use penumbra::lang::{LoadOptions, load_scene_with, parse_memory_size};
 use penumbra::output::BitDepth;
 use penumbra::povray_args::{self, Job, PovSettings};
 use penumbra::render::{AreaLightMode, LightSamples, RenderOptions, Splitting};
@@ -113,6 +113,10 @@ struct RenderArgs {
     /// to the next frame's), the scene parsed at each.
     #[arg(long, value_name = "N", default_value_t = 1)]
     motion_blur: u32,
+    /// Memory the scene's objects and values may take (e.g. 2G, 512M); default: the smaller
+    /// of half the physical memory and the address-space limit.
+    #[arg(long, value_name = "SIZE", value_parser = parse_memory_size)]
+    max_memory: Option<u64>,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -124,6 +128,10 @@ struct CheckArgs {
     /// Leave out features penumbra does not support (with a warning) instead of stopping.
     #[arg(long)]
     skip_unsupported: bool,
+    /// Memory the scene's objects and values may take (e.g. 2G, 512M); default: the smaller
+    /// of half the physical memory and the address-space limit.
+    #[arg(long, value_name = "SIZE", value_parser = parse_memory_size)]
+    max_memory: Option<u64>,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -222,6 +230,16 @@ struct BenchArgs {
     width: u32,
     #[arg(long, default_value_t = 240)]
     height: u32,
+    /// Only the parse section: the `#while` evaluation and the model's bytes per sphere
+    /// against POV-Ray's parse time.
+    #[arg(long)]
+    parse: bool,
+    /// Sphere counts (N x N grids) for `--parse`.
+    #[arg(long, value_delimiter = ',', default_values_t = [10_000usize, 100_000, 1_000_000])]
+    parse_counts: Vec<usize>,
+    /// Runs of each for `--parse`; medians are printed.
+    #[arg(long, default_value_t = 3)]
+    parse_repeats: usize,
 }
 
 #[derive(clap::Args)]
@@ -390,6 +408,7 @@ fn render(args: RenderArgs) -> Result<ExitCode, String> {
     let settings = JobSettings {
         base: args.render_options(),
         skip_unsupported: args.skip_unsupported,
+        max_memory: args.max_memory,
     };
     render_job(&job, &settings)
 }
@@ -486,7 +505,7 @@ impl RenderArgs {
 fn check(args: CheckArgs) -> ExitCode {
     let mut failed = false;
     for path in &args.scenes {
-        let options = load_options(&args.scene_args, 320, 240);
+        let options = load_options(&args.scene_args, 320, 240, args.max_memory);
         match load_scene_with(path, &options, args.skip_unsupported) {
             Ok(loaded) => {
                 eprint!("{}", loaded.debug);
@@ -550,6 +569,12 @@ fn compare(args: CompareArgs) -> Result<ExitCode, String> {
 }
 
 fn bench(args: BenchArgs) -> Result<ExitCode, String> {
+    if args.parse {
+        penumbra::study::parse_bench::run(&args.parse_counts, args.parse_repeats, |line| {
+            println!("{line}");
+        });
+        return Ok(ExitCode::SUCCESS);
+    }
     let options = penumbra::study::bench::BenchOptions {
         counts: args.counts,
         rays: args.rays,
@@ -643,8 +668,9 @@ fn text(error: impl std::fmt::Display) -> String {
     error.to_string()
 }
 
-fn load_options(args: &SceneArgs, width: u32, height: u32) -> LoadOptions {
+fn load_options(args: &SceneArgs, width: u32, height: u32, max_memory: Option<u64>) -> LoadOptions {
     LoadOptions {
+        max_memory,
         declares: args.declares.clone(),
         include_paths: args.include_paths.clone(),
         image_width: width,

@@ -40,6 +40,8 @@ pub struct JobSettings {
     /// are the job's).
     pub base: RenderOptions,
     pub skip_unsupported: bool,
+    /// The evaluator's memory budget (`--max-memory`); `None`: the default.
+    pub max_memory: Option<u64>,
 }
 
 impl JobProgress for () {
@@ -198,6 +200,7 @@ impl FrameRenderer<'_> {
             image_width: self.job.width,
             image_height: self.job.height,
             clock,
+            max_memory: self.settings.max_memory,
         };
         let loaded = load_scene_with(&self.job.scene, &load, self.settings.skip_unsupported)
             .map_err(|d| d.to_string())?;

@@ -8,8 +8,6 @@ use penumbra::scene::Scene;
 
 fn load(source: &str) -> Scene {
     let options = LoadOptions {
-        declares: Vec::new(),
-        include_paths: Vec::new(),
         image_width: 160,
         image_height: 120,
         ..LoadOptions::default()

@@ -60,8 +60,6 @@ fn pigment(body: &str) -> Pigment {
         "#version 3.7;\nplane {{ z, 0 pigment {{ {body} color_map {{ [0 rgb 0] [1 rgb 1] }} }} }}\n"
     );
     let options = LoadOptions {
-        declares: Vec::new(),
-        include_paths: Vec::new(),
         image_width: SIZE as u32,
         image_height: SIZE as u32,
         ..LoadOptions::default()
@@ -70,9 +68,10 @@ fn pigment(body: &str) -> Pigment {
         load_scene_source("noise.pov", &source, &options).unwrap_or_else(|d| panic!("{d}"));
     loaded.scene.objects[0]
         .texture
-        .clone()
+        .as_ref()
         .expect("texture")
         .pigment
+        .clone()
 }
 
 /// The grey value at POV-Ray's pixel centres (row 0 at the top).

@@ -67,15 +67,13 @@ fn texture(normal: &str) -> Texture {
     let source =
         format!("#version 3.7;\nplane {{ z, 0 pigment {{ rgb 1 }} normal {{ {normal} }} }}\n");
     let options = LoadOptions {
-        declares: Vec::new(),
-        include_paths: Vec::new(),
         image_width: SIZE as u32,
         image_height: SIZE as u32,
         ..LoadOptions::default()
     };
     let loaded =
         load_scene_source("normal.pov", &source, &options).unwrap_or_else(|d| panic!("{d}"));
-    loaded.scene.objects[0].texture.clone().expect("texture")
+    std::sync::Arc::unwrap_or_clone(loaded.scene.objects[0].texture.clone().expect("texture"))
 }
 
 /// The perturbed normal facing the camera (-z) at POV-Ray's pixel centres, row 0 at the top.

@@ -121,3 +121,45 @@ fn a_bad_declare_is_refused() {
     assert!(!result.status.success());
     assert!(String::from_utf8_lossy(&result.stderr).contains("not an identifier"));
 }
+
+/// A loop that would make 10^8 spheres, under a 4 GB address-space limit: the memory budget
+/// (at most the address-space limit) stops it with an error naming the loop, well before the
+/// machine's memory is gone, and nothing is written.
+#[test]
+fn a_hostile_loop_ends_with_the_memory_budget_error() {
+    if Command::new("prlimit").arg("--version").output().is_err() {
+        eprintln!("skipped: no prlimit");
+        return;
+    }
+    let temp = scratch("hostile");
+    let dir = temp.path();
+    let source = dir.join("hostile.pov");
+    std::fs::write(
+        &source,
+        "#declare I = 0;\n#while (I < 100000000)\n  sphere { <I, 0, 0>, 1 }\n  #declare I = I + 1;\n#end\n",
+    )
+    .expect("write scene");
+    let out = dir.join("hostile.png");
+    let start = std::time::Instant::now();
+    let result = Command::new("prlimit")
+        .arg("--as=4294967296")
+        .arg(env!("CARGO_BIN_EXE_penumbra"))
+        .arg("render")
+        .arg(&source)
+        .arg("--output")
+        .arg(&out)
+        .output()
+        .expect("runs");
+    let elapsed = start.elapsed().as_secs_f64();
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(!result.status.success(), "exit status was success");
+    assert!(
+        stderr.contains("the scene needs more than 4.0 GB (the memory budget): ")
+            && stderr.contains("objects made by the `#while` loop at ")
+            && stderr.contains("hostile.pov:2:1"),
+        "not the budget error:\n{stderr}"
+    );
+    assert!(!out.exists(), "an output file was written");
+    // Loose: it must end by itself, long before any test timeout.
+    assert!(elapsed < 120.0, "took {elapsed:.0} s");
+}

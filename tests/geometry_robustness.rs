@@ -22,7 +22,7 @@ fn matte(c: f64) -> Option<Texture> {
 
 fn object(shape: Shape, texture: Option<Texture>) -> Object {
     let mut o = Object::new(shape);
-    o.texture = texture;
+    o.texture = texture.map(std::sync::Arc::new);
     o
 }
 

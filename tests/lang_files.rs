@@ -7,7 +7,7 @@ mod probe;
 use std::path::{Path, PathBuf};
 
 use penumbra::lang::{
-    Diagnostic, LoadOptions, Loaded, Severity, SourceFiles, load_reading_globals,
+    Diagnostic, LoadOptions, Loaded, Severity, SourceFiles, load_reading_globals, parse_memory_size,
 };
 
 /// Reads names relative to tests/lang, so diagnostics name files the same way on every
@@ -45,7 +45,7 @@ struct Expect {
 const KINDS: &[&str] = &[
     "error", "hint", "note", "rendered", "warning", "debug", "value", "model",
 ];
-const SETTINGS: &[&str] = &["declare", "image", "include-path", "options"];
+const SETTINGS: &[&str] = &["declare", "image", "include-path", "options", "max-memory"];
 
 fn expectations(source: &str) -> Vec<Expect> {
     let mut out = Vec::new();
@@ -86,6 +86,7 @@ fn options(expects: &[Expect]) -> Result<(LoadOptions, bool), String> {
                 o.image_height = h.parse().map_err(|_| bad())?;
             }
             "include-path" => o.include_paths.push(PathBuf::from(e.text.trim())),
+            "max-memory" => o.max_memory = Some(parse_memory_size(&e.text).map_err(|_| bad())?),
             "options" if e.text.trim() == "skip-unsupported" => skip = true,
             "options" => return Err(bad()),
             _ => {}

@@ -36,8 +36,6 @@ fn scenes() -> Vec<PathBuf> {
 
 fn load(path: &Path) -> Scene {
     let options = LoadOptions {
-        declares: Vec::new(),
-        include_paths: Vec::new(),
         image_width: WIDTH as u32,
         image_height: HEIGHT as u32,
         ..LoadOptions::default()

@@ -26,8 +26,6 @@ fn load(name: &str) -> Scene {
         .join("scenes")
         .join(name);
     let options = LoadOptions {
-        declares: Vec::new(),
-        include_paths: Vec::new(),
         image_width: WIDTH as u32,
         image_height: HEIGHT as u32,
         ..LoadOptions::default()

@@ -18,6 +18,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 pub use diagnostics::{Diagnostic, Severity, Span};
+pub use eval::budget::{default_memory_budget, parse_memory_size};
 
 /// Settings from the command line that the scene can see.
 #[derive(Clone, Debug)]
@@ -30,6 +31,9 @@ pub struct LoadOptions {
     pub image_height: u32,
     /// For the animation identifiers (`clock`, `frame_number`, ...).
     pub clock: AnimationClock,
+    /// Bytes the scene's objects and values may take (`--max-memory`); `None`: the default,
+    /// [`default_memory_budget`].
+    pub max_memory: Option<u64>,
 }
 
 /// What the animation identifiers read: `clock`, `clock_delta`, `clock_on`,
@@ -73,6 +77,7 @@ impl Default for LoadOptions {
             image_width: 800,
             image_height: 600,
             clock: AnimationClock::default(),
+            max_memory: None,
         }
     }
 }
@@ -236,6 +241,7 @@ fn evaluate(
     );
     ev.skip_unsupported = skip_unsupported;
     ev.clock = options.clock;
+    ev.set_memory_budget(options.max_memory.unwrap_or_else(default_memory_budget));
     for (name, value) in &options.declares {
         ev.declare_global(name, eval::value::Value::Float(*value));
     }

@@ -1,7 +1,8 @@
 //! Text to tokens, with nom. Whitespace and comments (`//` and nested `/* */`) vanish
 //! here; every token keeps the byte range it came from.
 
-use std::rc::Rc;
+use std::collections::HashSet;
+use std::sync::{Mutex, OnceLock};
 
 use nom::{
     IResult, Parser,
@@ -12,7 +13,7 @@ use nom::{
 };
 
 use super::diagnostics::{Diagnostic, FileId, Span};
-use super::syntax::{Punct, SourceTokens, Token, TokenKind};
+use super::syntax::{Name, Punct, SourceTokens, Token, TokenKind};
 
 pub fn tokenize(file: FileId, text: &str) -> Result<SourceTokens, Diagnostic> {
     let mut tokens = Vec::new();
@@ -87,6 +88,20 @@ fn skip_trivia<'a>(file: FileId, text: &'a str, mut rest: &'a str) -> Result<&'a
     }
 }
 
+/// The one copy of `text`: names and strings live as long as the process, so tokens are
+/// `Copy` (see [`Name`]). What is kept is bounded by the distinct texts of the scenes read.
+pub fn intern(text: &str) -> Name {
+    static NAMES: OnceLock<Mutex<HashSet<Name>>> = OnceLock::new();
+    let names = NAMES.get_or_init(|| Mutex::new(HashSet::new()));
+    let mut names = names.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(&name) = names.get(text) {
+        return name;
+    }
+    let name: Name = Box::leak(text.to_owned().into_boxed_str());
+    names.insert(name);
+    name
+}
+
 fn token(i: &str) -> IResult<&str, TokenKind> {
     alt((number, word, directive, string, punct)).parse(i)
 }
@@ -114,7 +129,7 @@ fn ident_text(i: &str) -> IResult<&str, &str> {
 
 fn word(i: &str) -> IResult<&str, TokenKind> {
     let (rest, text) = ident_text(i)?;
-    Ok((rest, TokenKind::Ident(Rc::from(text))))
+    Ok((rest, TokenKind::Ident(intern(text))))
 }
 
 fn directive(i: &str) -> IResult<&str, TokenKind> {
@@ -125,7 +140,7 @@ fn directive(i: &str) -> IResult<&str, TokenKind> {
     )
         .parse(i)?;
     // A lone `#` (seen in POV-Ray's own examples) is an empty directive that does nothing.
-    Ok((rest, TokenKind::Directive(Rc::from(name.unwrap_or("")))))
+    Ok((rest, TokenKind::Directive(intern(name.unwrap_or("")))))
 }
 
 fn string(i: &str) -> IResult<&str, TokenKind> {
@@ -137,7 +152,7 @@ fn string(i: &str) -> IResult<&str, TokenKind> {
         out.push_str(chunk);
         rest = after;
         if let Ok((after, _)) = char::<&str, nom::error::Error<&str>>('"').parse(rest) {
-            return Ok((after, TokenKind::Str(Rc::from(out.as_str()))));
+            return Ok((after, TokenKind::Str(intern(&out))));
         }
         let (after, _) = char('\\').parse(rest)?;
         let (after, c) = satisfy(|c| c != '\n').parse(after)?;

@@ -5,9 +5,13 @@
 //! text. A nested tree of statements cannot represent that faithfully, so the tree here is
 //! deliberately flat: a file is a sequence of tokens, each with its span, and the evaluator
 //! (`eval`) gives them structure while it reads them, exactly as POV-Ray does. Tokens are
-//! shared (`Rc`) so loops and macro bodies replay them without copying.
+//! shared (`Rc`) so loops and macro bodies replay them without copying, and are plain
+//! `Copy` values: names and strings are interned ([`Name`]), so reading a token copies a few
+//! words and never touches a reference count.
 
-use std::rc::Rc;
+/// An interned name or string: one copy per distinct text for the life of the process
+/// (bounded by the scene text read), so tokens can be `Copy` and equal names share a pointer.
+pub type Name = &'static str;
 
 use super::diagnostics::Span;
 
@@ -70,20 +74,20 @@ impl Punct {
     }
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TokenKind {
     Number(f64),
     /// Keywords and user identifiers alike: which is which depends on where they appear.
-    Ident(Rc<str>),
-    Str(Rc<str>),
+    Ident(Name),
+    Str(Name),
     /// `#name` (POV-Ray allows spaces after the `#`).
-    Directive(Rc<str>),
+    Directive(Name),
     Punct(Punct),
     /// End of a file or of a macro body.
     Eof,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Token {
     pub kind: TokenKind,
     pub span: Span,
@@ -94,7 +98,7 @@ impl Token {
         self.kind == TokenKind::Punct(p)
     }
 
-    pub fn ident(&self) -> Option<&str> {
+    pub fn ident(&self) -> Option<Name> {
         match &self.kind {
             TokenKind::Ident(s) => Some(s),
             _ => None,
@@ -121,7 +125,7 @@ impl Token {
 /// One source file after tokenizing.
 #[derive(Clone, Debug)]
 pub struct SourceTokens {
-    pub tokens: Rc<[Token]>,
+    pub tokens: std::rc::Rc<[Token]>,
     /// Where "end of file" errors point.
     pub eof: Span,
 }

@@ -153,7 +153,7 @@ impl Builder {
     /// each part. Returns the item for use as a CSG child.
     fn object(&mut self, object: &Object, inherited: Looks<'_>, top: bool) -> Option<Item> {
         let looks = Looks {
-            texture: object.texture.as_ref().unwrap_or(inherited.texture),
+            texture: object.texture.as_deref().unwrap_or(inherited.texture),
             interior: object.interior.as_ref().unwrap_or(inherited.interior),
             interior_owner: match &object.interior {
                 Some(i) => Some(i as *const Interior as usize),

@@ -1,3 +1,5 @@
+use std::sync::Arc;
+
 use glam::DVec3;
 
 use super::{Interior, Texture, Transform};
@@ -120,11 +122,13 @@ pub struct ObjectFlags {
 /// A shape with its placement and appearance. `transform` maps the shape's own coordinates
 /// to world space; a child of a CSG shape carries its full transform to world space too.
 /// `texture: None` means "inherit from the enclosing CSG, else the default texture".
+/// Textures are shared (`Arc`): the objects a loop makes with the same texture hold one copy,
+/// and changing one (a transform) copies it first.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     pub shape: Shape,
     pub transform: Transform,
-    pub texture: Option<Texture>,
+    pub texture: Option<Arc<Texture>>,
     pub interior: Option<Interior>,
     pub flags: ObjectFlags,
     /// `clipped_by { ... }`: only the parts of the surface inside all of these remain.
@@ -150,7 +154,7 @@ impl Object {
     pub fn transform_by(&mut self, t: &Transform) {
         self.transform = self.transform.then(t);
         if let Some(texture) = &mut self.texture {
-            texture.transform_by(t);
+            Arc::make_mut(texture).transform_by(t);
         }
         if let Some(children) = self.shape.children_mut() {
             for child in children {

@@ -9,6 +9,7 @@ pub mod converge;
 pub mod corpus;
 pub mod distribution;
 pub mod metrics;
+pub mod parse_bench;
 pub mod reference;
 mod tempdir;
 

@@ -2,7 +2,6 @@
 //! `#switch`), macros and `#include`. They run while the token stream is read, so they may
 //! appear anywhere.
 
-use std::collections::HashMap;
 use std::path::PathBuf;
 use std::rc::Rc;
 
@@ -20,13 +19,13 @@ const MAX_DEBUG_BYTES: usize = 1 << 20;
 const MAX_ARRAY_ELEMENTS: usize = 1_000_000;
 
 impl Evaluator<'_> {
-    pub(super) fn directive(&mut self, name: Rc<str>, span: Span) -> R<()> {
+    pub(super) fn directive(&mut self, name: &'static str, span: Span) -> R<()> {
         let tok = Token {
-            kind: TokenKind::Directive(name.clone()),
+            kind: TokenKind::Directive(name),
             span,
         };
         self.enter(span)?;
-        let r = self.directive_inner(&name, &tok);
+        let r = self.directive_inner(name, &tok);
         self.leave();
         r
     }
@@ -74,7 +73,7 @@ impl Evaluator<'_> {
     /// `#version 3.7;`: a number as written is read raw, so the directive takes effect before
     /// the next token is read.
     fn version_directive(&mut self) -> R<()> {
-        let v = match self.raw_peek(0).map(|t| t.kind.clone()) {
+        let v = match self.raw_peek(0).map(|t| t.kind) {
             Some(TokenKind::Number(n)) => {
                 self.raw_next();
                 n
@@ -354,7 +353,7 @@ impl Evaluator<'_> {
         self.frames
             .last()
             .and_then(|f| f.tokens.get(pos.wrapping_sub(1)))
-            .is_some_and(|t| t.kind == TokenKind::Directive(Rc::from("range")))
+            .is_some_and(|t| t.kind == TokenKind::Directive("range"))
     }
 
     /// `#case (v)` or `#range (a, b)` against the innermost `#switch` value.
@@ -434,6 +433,8 @@ impl Evaluator<'_> {
                 }
                 _ => return Err(self.stray_in_block(&tok, "`#default`")),
             }
+            self.changed_default = (self.default_texture != crate::scene::Texture::default())
+                .then(|| std::sync::Arc::new(self.default_texture.clone()));
         }
         let _ = open;
         // Not `expect`: reading past the `}` would run the next directive too early.
@@ -590,6 +591,12 @@ impl Evaluator<'_> {
         if total > MAX_ARRAY_ELEMENTS {
             return Err(self.err(kw.span, "this array is too large"));
         }
+        let bytes = total.saturating_mul(std::mem::size_of::<Option<Value>>());
+        self.charge(
+            bytes as u64,
+            super::budget::Growth::ArrayElements(total),
+            kw.span,
+        )?;
         let mut items = vec![None; total];
         if self.raw_peek(0).is_some_and(|t| t.is_punct(Punct::LBrace)) {
             let mut flat = Vec::new();
@@ -680,16 +687,17 @@ impl Evaluator<'_> {
             end,
             file,
         };
+        self.special_names = true;
         self.scopes[0].insert(name, Value::Macro(Rc::new(def)));
         Ok(())
     }
 
-    pub(super) fn call_macro(&mut self, name: Rc<str>, span: Span) -> R<()> {
-        let Some(Value::Macro(def)) = self.lookup(&name).cloned() else {
+    pub(super) fn call_macro(&mut self, name: &str, span: Span) -> R<()> {
+        let Some(Value::Macro(def)) = self.lookup(name).cloned() else {
             return Ok(());
         };
         self.expect(Punct::LParen, &format!("after the macro name `{name}`"))?;
-        let mut locals = HashMap::new();
+        let mut locals = super::stream::Scope::default();
         let mut by_ref = Vec::new();
         let mut i = 0;
         let saved = std::mem::replace(&mut self.in_vector, false);
@@ -746,10 +754,10 @@ impl Evaluator<'_> {
 
     fn include(&mut self, span: Span) -> R<()> {
         // A plain string is taken as is, so the directive after it waits for the include.
-        let (v, s) = match self.raw_peek(0).map(|t| (t.kind.clone(), t.span)) {
+        let (v, s) = match self.raw_peek(0).map(|t| (t.kind, t.span)) {
             Some((TokenKind::Str(name), s)) => {
                 self.raw_next();
-                (Value::Str(name), s)
+                (Value::Str(Rc::from(name)), s)
             }
             _ => self.expr()?,
         };

@@ -291,7 +291,7 @@ impl Evaluator<'_> {
             }
             TokenKind::Str(s) => {
                 self.next()?;
-                Ok((Value::Str(s.clone()), tok.span))
+                Ok((Value::Str(std::rc::Rc::from(*s)), tok.span))
             }
             TokenKind::Punct(Punct::LParen) => {
                 self.next()?;
@@ -303,10 +303,7 @@ impl Evaluator<'_> {
                 Ok((v, tok.span.join(close.span)))
             }
             TokenKind::Punct(Punct::Lt) => self.vector_literal(),
-            TokenKind::Ident(name) => {
-                let name = name.clone();
-                self.ident_value(&tok, &name)
-            }
+            TokenKind::Ident(name) => self.ident_value(&tok, name),
             _ => Err(self.expected("an expression", &tok)),
         }
     }

@@ -47,7 +47,7 @@ impl Evaluator<'_> {
             }
             _ if super::objects::is_object_keyword(word) => {
                 let o = self.object()?;
-                self.add_object(o);
+                self.add_object(o, tok.span)?;
             }
             _ if UNSUPPORTED_ITEMS.contains(&word) => {
                 let word = word.to_string();
@@ -84,17 +84,27 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    pub(super) fn add_object(&mut self, o: ObjectValue) {
+    pub(super) fn add_object(&mut self, o: ObjectValue, span: crate::lang::Span) -> R<()> {
         if let Some(mut object) = o.object {
             // Only a changed default needs writing down: `None` already means the built-in
             // default texture to the renderer.
-            if object.texture.is_none() && self.default_texture != crate::scene::Texture::default()
+            if object.texture.is_none()
+                && let Some(shared) = &self.changed_default
             {
-                object.texture = Some(self.default_texture.clone());
+                object.texture = Some(shared.clone());
+            }
+            let objects = &mut self.scene.objects;
+            if objects.len() == objects.capacity() {
+                // The list doubles: its new capacity is charged (its slack included).
+                let more = objects.capacity().max(64);
+                let bytes = (more * std::mem::size_of::<crate::scene::Object>()) as u64;
+                self.charge(bytes, super::budget::Growth::Objects(0), span)?;
+                self.scene.objects.reserve_exact(more);
             }
             self.scene.objects.push(object);
         }
         self.scene.lights.extend(o.lights);
+        Ok(())
     }
 
     /// What may follow `#declare Name =`.
@@ -142,7 +152,10 @@ impl Evaluator<'_> {
                 self.next()?;
                 let mut holder = crate::scene::Object::new(crate::scene::Shape::Union(Vec::new()));
                 self.material_body(&mut holder)?;
-                Value::Material(Box::new((holder.texture, holder.interior)))
+                Value::Material(Box::new((
+                    holder.texture.map(std::sync::Arc::unwrap_or_clone),
+                    holder.interior,
+                )))
             }
             "transform" => {
                 self.next()?;
@@ -161,7 +174,7 @@ impl Evaluator<'_> {
     /// `keyword {`: consumes both and returns the brace token for error messages.
     pub(super) fn block_start(&mut self, keyword: &str) -> R<Token> {
         self.next()?;
-        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
+        let open = self.expect_lazy(Punct::LBrace, || format!("after `{keyword}`"))?;
         self.enter(open.span)?;
         Ok(open)
     }
@@ -169,7 +182,7 @@ impl Evaluator<'_> {
     /// The closing brace of a block opened with [`Evaluator::block_start`].
     pub(super) fn block_end(&mut self, _open: Token, what: &str) -> R<()> {
         self.leave();
-        self.expect(Punct::RBrace, &format!("to close {what}"))?;
+        self.expect_lazy(Punct::RBrace, || format!("to close {what}"))?;
         Ok(())
     }
 

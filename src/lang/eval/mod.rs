@@ -11,6 +11,7 @@
 //! includes), `expr` (expressions), `functions` (the table of built-in functions), `items` (camera, lights, global
 //! settings), `objects` (shapes, CSG, modifiers), `texture` (pigment, finish, texture).
 
+pub mod budget;
 mod directives;
 mod expr;
 mod functions;
@@ -21,7 +22,6 @@ mod stream;
 mod texture;
 pub mod value;
 
-use std::collections::HashMap;
 use std::path::PathBuf;
 use std::rc::Rc;
 
@@ -30,14 +30,12 @@ use crate::scene::Scene;
 use super::SourceFiles;
 use super::diagnostics::{Diagnostic, Files, Span};
 use super::syntax::{Punct, Token, TokenKind};
-use stream::{Cond, Frame};
+use stream::{Cond, Frame, Scope};
 use value::Value;
 
 /// Deeper nesting than this (blocks, parentheses, macro calls, includes) is reported rather
 /// than risking the stack.
 pub const MAX_DEPTH: usize = 256;
-/// Shapes and mesh triangles in a scene: beyond this a scene would exhaust memory first.
-pub const MAX_OBJECTS: u64 = 20_000_000;
 /// Total loop iterations in a scene, so an endless `#while` ends with an error.
 #[cfg(not(test))]
 pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
@@ -50,7 +48,10 @@ pub struct Evaluator<'w> {
     pub files: Files,
     frames: Vec<Frame>,
     conds: Vec<Cond>,
-    scopes: Vec<HashMap<Rc<str>, Value>>,
+    scopes: Vec<Scope>,
+    /// Whether any scope may hold a macro or an unsupported value, which the token stream
+    /// must act on when it meets their names; until then names pass unlooked-up.
+    special_names: bool,
     pub scene: Scene,
     pub warnings: Vec<Diagnostic>,
     depth: usize,
@@ -63,14 +64,18 @@ pub struct Evaluator<'w> {
     in_vector: bool,
     /// What new textures start from; `#default` changes it.
     default_texture: crate::scene::Texture,
+    /// The default texture, shared, once `#default` made it differ from the built-in one.
+    changed_default: Option<std::sync::Arc<crate::scene::Texture>>,
+    /// The texture an object got last: the next object with an equal one shares it.
+    last_texture: Option<std::sync::Arc<crate::scene::Texture>>,
     /// `--skip-unsupported`: unsupported features become warnings and are left out.
     pub skip_unsupported: bool,
     /// What `#debug` printed, in order.
     pub debug_output: String,
-    /// Shapes (and mesh triangles) made so far, against [`MAX_OBJECTS`].
-    object_count: u64,
     /// The animation identifiers' values.
     pub clock: crate::lang::AnimationClock,
+    /// What the scene's objects and values take, against the memory budget.
+    budget: budget::Budget,
 }
 
 impl<'w> Evaluator<'w> {
@@ -85,7 +90,8 @@ impl<'w> Evaluator<'w> {
             files: Files::default(),
             frames: Vec::new(),
             conds: Vec::new(),
-            scopes: vec![HashMap::new()],
+            scopes: vec![Scope::default()],
+            special_names: false,
             scene: Scene::default(),
             warnings: Vec::new(),
             depth: 0,
@@ -96,14 +102,19 @@ impl<'w> Evaluator<'w> {
             rng_states: Vec::new(),
             in_vector: false,
             default_texture: crate::scene::Texture::default(),
+            changed_default: None,
+            last_texture: None,
             skip_unsupported: false,
             debug_output: String::new(),
-            object_count: 0,
             clock: crate::lang::AnimationClock::default(),
+            budget: budget::Budget::new(budget::default_memory_budget()),
         }
     }
 
     pub fn declare_global(&mut self, name: &str, value: Value) {
+        if value.needs_check_in_stream() {
+            self.special_names = true;
+        }
         self.scopes[0].insert(Rc::from(name), value);
     }
 
@@ -165,6 +176,21 @@ impl<'w> Evaluator<'w> {
         }
     }
 
+    /// [`Evaluator::expect`] with the context written only when it is needed.
+    fn expect_lazy(
+        &mut self,
+        p: Punct,
+        context: impl FnOnce() -> String,
+    ) -> Result<Token, Diagnostic> {
+        let tok = self.peek()?;
+        if tok.is_punct(p) {
+            self.next()?;
+            Ok(tok)
+        } else {
+            self.expect(p, &context())
+        }
+    }
+
     fn eat(&mut self, p: Punct) -> Result<bool, Diagnostic> {
         if self.peek()?.is_punct(p) {
             self.next()?;
@@ -217,13 +243,35 @@ impl<'w> Evaluator<'w> {
         d
     }
 
-    /// Counts shapes made, so a loop cannot fill memory with objects unnoticed.
-    fn count_objects(&mut self, n: u64, span: Span) -> Result<(), Diagnostic> {
-        self.object_count = self.object_count.saturating_add(n);
-        if self.object_count > MAX_OBJECTS {
-            return Err(self.err(span, format!("too many objects (more than {MAX_OBJECTS})")));
+    /// A texture for an object: the last one handed out when equal (objects made by a loop
+    /// share one), else a new shared one.
+    fn share_texture(
+        &mut self,
+        texture: crate::scene::Texture,
+    ) -> std::sync::Arc<crate::scene::Texture> {
+        if let Some(last) = &self.last_texture
+            && **last == texture
+        {
+            return last.clone();
         }
-        Ok(())
+        // Charged when it is known: an error here would change nothing.
+        let size = std::mem::size_of::<crate::scene::Texture>() as u64;
+        self.budget.used = self.budget.used.saturating_add(size);
+        let shared = std::sync::Arc::new(texture);
+        self.last_texture = Some(shared.clone());
+        shared
+    }
+
+    /// Sets the memory budget (bytes) the scene's objects and values may take.
+    pub fn set_memory_budget(&mut self, bytes: u64) {
+        self.budget.limit = bytes;
+    }
+
+    /// Counts `n` shapes (or mesh triangles) made of `bytes_each`, against the memory
+    /// budget, so a loop cannot fill memory with objects unnoticed.
+    fn count_objects(&mut self, n: u64, bytes_each: usize, span: Span) -> Result<(), Diagnostic> {
+        let bytes = n.saturating_mul(bytes_each as u64);
+        self.charge(bytes, budget::Growth::Objects(n), span)
     }
 
     /// An unsupported feature at `tok`: an error, or with `--skip-unsupported` a warning,

@@ -2,6 +2,8 @@
 //! they are met (see `Object::transform_by`): a texture attached before a transform moves
 //! with it, one attached after does not.
 
+use std::sync::Arc;
+
 use glam::{DAffine3, DMat3, DVec3};
 
 use super::super::diagnostics::Diagnostic;
@@ -97,10 +99,10 @@ impl Evaluator<'_> {
     /// An object starting at its keyword (`sphere`, `union`, `object`, ...).
     pub(super) fn object(&mut self) -> R<ObjectValue> {
         let kw = self.peek()?;
-        let word = kw.ident().unwrap_or("").to_string();
-        let open = self.block_start(&word)?;
+        let word = kw.ident().unwrap_or("");
+        let open = self.block_start(word)?;
         let what = the(&kw);
-        self.count_objects(1, kw.span)?;
+        self.count_objects(1, std::mem::size_of::<Object>(), kw.span)?;
         let read = match SHAPES.iter().find(|(name, _)| *name == word) {
             Some((_, reader)) => reader(self, &kw)?,
             None => self.object_reference()?,
@@ -391,11 +393,11 @@ impl Evaluator<'_> {
                     let top = self.texture_body(self.default_texture.clone())?;
                     // A second `texture` layers over the first; the first replaces the default.
                     let below = if textures > 1 {
-                        object.texture.take()
+                        object.texture.take().map(Arc::unwrap_or_clone)
                     } else {
                         None
                     };
-                    object.texture = Some(Self::layer_texture(below, top));
+                    object.texture = Some(self.share_texture(Self::layer_texture(below, top)));
                     true
                 }
                 "clipped_by" => {
@@ -460,8 +462,9 @@ impl Evaluator<'_> {
         let texture = object
             .texture
             .take()
-            .unwrap_or_else(|| self.default_texture.clone());
-        object.texture = Some(edit(self, texture)?);
+            .map_or_else(|| self.default_texture.clone(), Arc::unwrap_or_clone);
+        let edited = edit(self, texture)?;
+        object.texture = Some(self.share_texture(edited));
         Ok(())
     }
 
@@ -708,7 +711,8 @@ impl Evaluator<'_> {
                         return Err(self.stray_in_block(&t, "the mesh triangle"));
                     }
                     self.block_end(open, "the mesh triangle")?;
-                    self.count_objects(1, tok.span)?;
+                    let size = std::mem::size_of::<crate::scene::MeshTriangle>();
+                    self.count_objects(1, size, tok.span)?;
                     if !degenerate {
                         mesh.triangles.push(crate::scene::MeshTriangle {
                             corners: tri.corners,
@@ -750,7 +754,7 @@ impl Evaluator<'_> {
             ));
         }
         let n = n as usize;
-        self.count_objects(n as u64 / 16, s)?;
+        self.count_objects(1, n * std::mem::size_of::<DVec3>(), s)?;
         let mut points = Vec::with_capacity(n.min(1 << 16));
         let mut first = 0;
         for i in 0..n {
@@ -800,7 +804,8 @@ impl Evaluator<'_> {
             match tok.ident() {
                 Some("texture") => {
                     ev.next()?;
-                    object.texture = Some(ev.texture_body(ev.default_texture.clone())?);
+                    let t = ev.texture_body(ev.default_texture.clone())?;
+                    object.texture = Some(ev.share_texture(t));
                 }
                 Some("interior") => {
                     ev.next()?;
@@ -815,8 +820,8 @@ impl Evaluator<'_> {
                             ev.err(s, format!("expected a material, found {}", v.kind_name()))
                         );
                     };
-                    if m.0.is_some() {
-                        object.texture = m.0;
+                    if let Some(t) = m.0 {
+                        object.texture = Some(ev.share_texture(t));
                     }
                     if m.1.is_some() {
                         object.interior = m.1;
@@ -825,7 +830,7 @@ impl Evaluator<'_> {
                 _ => match ev.transform_modifier()? {
                     Some(t) => {
                         if let Some(texture) = &mut object.texture {
-                            texture.transform_by(&t);
+                            Arc::make_mut(texture).transform_by(&t);
                         }
                     }
                     None => return Err(ev.stray_in_block(tok, "the material")),

@@ -2,6 +2,7 @@
 //! `#if`/`#while`/`#for` blocks. Directives and macro calls are run here, as they are met.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::rc::Rc;
 
 use super::super::diagnostics::{Diagnostic, FileId, Span, TracePoint};
@@ -9,6 +10,52 @@ use super::super::parse::tokenize;
 use super::super::syntax::{Token, TokenKind};
 use super::Evaluator;
 use super::value::{MacroDef, Value};
+
+/// One scope of identifiers. Names are hashed on every use, so the hash is a cheap one
+/// (FxHash's multiply-rotate) rather than SipHash: scene files are not hostile to it in a
+/// way that matters, as a scope holds at most what the scene itself declares.
+pub(super) type Scope = HashMap<Rc<str>, Value, BuildHasherDefault<NameHasher>>;
+
+/// FxHash: a word at a time, rotate, xor, multiply.
+#[derive(Default, Clone, Copy)]
+pub(super) struct NameHasher(u64);
+
+impl NameHasher {
+    const K: u64 = 0xf135_7aea_2e62_a9c5;
+
+    fn add(&mut self, word: u64) {
+        self.0 = (self.0.rotate_left(5) ^ word).wrapping_mul(Self::K);
+    }
+}
+
+impl Hasher for NameHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        let mut chunks = bytes.chunks_exact(8);
+        for c in &mut chunks {
+            let mut w = [0u8; 8];
+            w.copy_from_slice(c);
+            self.add(u64::from_le_bytes(w));
+        }
+        let rest = chunks.remainder();
+        if !rest.is_empty() {
+            let mut w = [0u8; 8];
+            w[..rest.len()].copy_from_slice(rest);
+            self.add(u64::from_le_bytes(w));
+        }
+    }
+
+    fn write_u8(&mut self, i: u8) {
+        self.add(u64::from(i));
+    }
+
+    fn write_usize(&mut self, i: usize) {
+        self.add(i as u64);
+    }
+
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
 
 pub(super) enum FrameKind {
     Root,
@@ -112,7 +159,7 @@ impl Evaluator<'_> {
         let kind = match include_at {
             None => FrameKind::Root,
             Some(at) => {
-                self.scopes.push(HashMap::new());
+                self.scopes.push(Scope::default());
                 FrameKind::Include { at, name }
             }
         };
@@ -132,7 +179,7 @@ impl Evaluator<'_> {
         &mut self,
         def: Rc<MacroDef>,
         call: Span,
-        locals: HashMap<Rc<str>, Value>,
+        locals: Scope,
         by_ref: Vec<(Rc<str>, Rc<str>)>,
     ) -> Result<(), Diagnostic> {
         if self.frames.len() >= super::MAX_DEPTH {
@@ -143,6 +190,9 @@ impl Evaluator<'_> {
                     super::MAX_DEPTH
                 ),
             ));
+        }
+        if locals.values().any(Value::needs_check_in_stream) {
+            self.special_names = true;
         }
         self.scopes.push(locals);
         let eof = def.tokens.get(def.end).map_or(Span::DETACHED, |t| t.span);
@@ -207,18 +257,21 @@ impl Evaluator<'_> {
                 self.pop_frame();
                 continue;
             }
-            let tok = frame.tokens[frame.pos].clone();
+            let tok = frame.tokens[frame.pos];
             match &tok.kind {
                 TokenKind::Directive(name) => {
                     self.advance();
-                    self.directive(name.clone(), tok.span)?;
+                    self.directive(name, tok.span)?;
                 }
-                TokenKind::Ident(name) if matches!(self.lookup(name), Some(Value::Macro(_))) => {
-                    self.advance();
-                    self.call_macro(name.clone(), tok.span)?;
-                }
-                TokenKind::Ident(name) => {
-                    if let Some(Value::Unsupported(original)) = self.lookup(name) {
+                // Most names are keywords or plain values: only look them up when some
+                // scope may hold a macro or an unsupported value.
+                TokenKind::Ident(_) if !self.special_names => return Ok(tok),
+                TokenKind::Ident(name) => match self.lookup(name) {
+                    Some(Value::Macro(_)) => {
+                        self.advance();
+                        self.call_macro(name, tok.span)?;
+                    }
+                    Some(Value::Unsupported(original)) => {
                         let mut d = self.err(tok.span, original.message.clone());
                         d.trace.insert(
                             0,
@@ -230,8 +283,8 @@ impl Evaluator<'_> {
                         );
                         return Err(d);
                     }
-                    return Ok(tok);
-                }
+                    _ => return Ok(tok),
+                },
                 _ => return Ok(tok),
             }
         }
@@ -246,11 +299,10 @@ impl Evaluator<'_> {
         while let Some(frame) = self.frames.last() {
             if frame.pos < frame.end {
                 // Neither a directive nor a name (a macro call, say) can continue an
-                // expression, so neither is run here.
-                if let Some(tok) = frame.tokens.get(frame.pos)
-                    && matches!(tok.kind, TokenKind::Directive(_) | TokenKind::Ident(_))
-                {
-                    return Ok(tok.clone());
+                // expression, so neither is run here; any other token is what `peek`
+                // would return.
+                if let Some(tok) = frame.tokens.get(frame.pos) {
+                    return Ok(*tok);
                 }
                 break;
             }
@@ -305,7 +357,7 @@ impl Evaluator<'_> {
             };
         }
         frame.pos += 1;
-        frame.tokens[frame.pos - 1].clone()
+        frame.tokens[frame.pos - 1]
     }
 
     pub(super) fn raw_peek(&self, ahead: usize) -> Option<&Token> {
@@ -348,6 +400,9 @@ impl Evaluator<'_> {
                 .find(|&i| self.scopes[i].contains_key(&name))
                 .unwrap_or(0)
         };
+        if value.needs_check_in_stream() {
+            self.special_names = true;
+        }
         self.scopes[index].insert(name, value);
     }
 

@@ -1090,7 +1090,7 @@ impl Evaluator<'_> {
                         }
                     }
                     Some("gamma") => {
-                        let t = tok.clone();
+                        let t = tok;
                         return Err(self.unsupported(&t, "image gamma"));
                     }
                     _ => return Err(self.stray_in_block(&tok, "the image map")),

@@ -109,6 +109,11 @@ pub struct ArrayValue {
 }
 
 impl Value {
+    /// Macros and unsupported values act where their names appear in the token stream.
+    pub fn needs_check_in_stream(&self) -> bool {
+        matches!(self, Value::Macro(_) | Value::Unsupported(_))
+    }
+
     pub fn kind_name(&self) -> &'static str {
         match self {
             Value::Float(_) => "a float",
