@@ -32,6 +32,10 @@ PATTERNS = {
     "bozo_ng3": "bozo noise_generator 3",
     "granite_ng3": "granite noise_generator 3",
     "wrinkles_ng3": "wrinkles noise_generator 3",
+    "bozo_turbulence": "bozo turbulence 0.6 octaves 7 omega 0.5 lambda 2.5",
+    "bozo_turbulence_strong": "bozo turbulence 1.5 octaves 10 omega 0.5 lambda 2.5",
+    "bozo_turbulence_one_octave": "bozo turbulence 0.5 octaves 1",
+    "granite_turbulence": "granite turbulence 0.65 octaves 6 omega 0.7 lambda 2",
 }
 SIZE = 512
 EXTENT = 32.0

@@ -14,7 +14,9 @@ pub enum Blend {
 
 /// POV-Ray's blend-map lookup: values below the first entry take the first, above the last
 /// the last; between two entries the colours mix linearly (all five channels); equal
-/// values make a sharp step.
+/// values make a sharp step. A value exactly at an entry belongs to the interval below it
+/// (measured: `[0 green][0.5 green][0.5 red][1 red]` is green at exactly 0.5), which
+/// decides the faces of boxes and planes that lie on a stripe's edge.
 pub fn blend_position<T>(map: &[T], v: f64, key: impl Fn(&T) -> f64) -> Blend {
     let n = map.len();
     if n == 0 {
@@ -25,7 +27,7 @@ pub fn blend_position<T>(map: &[T], v: f64, key: impl Fn(&T) -> f64) -> Blend {
     }
     for i in 1..n {
         let hi = key(&map[i]);
-        if v < hi {
+        if v <= hi {
             let lo = key(&map[i - 1]);
             let t = if hi > lo { (v - lo) / (hi - lo) } else { 1.0 };
             return Blend::Two(i - 1, t);
@@ -57,8 +59,10 @@ mod tests {
             Blend::Two(0, t) => assert!((t - 0.5).abs() < 1e-12),
             _ => panic!("expected a blend of entries 0 and 1"),
         }
-        // Two entries at the same value make a sharp step: just above it, the next pair.
-        assert!(matches!(at(0.5), Blend::Two(2, t) if t == 0.0));
+        // Two entries at the same value make a sharp step: at it, the pair below; just above
+        // it, the next pair.
+        assert!(matches!(at(0.5), Blend::Two(0, t) if t == 1.0));
+        assert!(matches!(at(0.5 + 1e-12), Blend::Two(2, t) if t < 1e-9));
         let empty: [f64; 0] = [];
         assert!(matches!(blend_position(&empty, 0.5, |e| *e), Blend::None));
     }

@@ -115,6 +115,14 @@ fn spiral_angle(x: f64, y: f64, r: f64) -> f64 {
     if x < 0.0 { 1.5 * PI - s } else { 0.5 * PI + s }
 }
 
+/// POV-Ray's gradient wraps values above 1 to [0, 1) itself, before the general wrap by
+/// 1.00001 (measured on planes `gradient y` at y = 1.25, 2, 3: 0.25, 0, 0, where the
+/// general wrap alone would give 0.24999, 0.99998, 0.99997); 1 itself stays 1, and negative
+/// values are left to the general wrap (y = -0.5 reads 0.50001).
+fn gradient_value(v: f64) -> f64 {
+    if v > 1.0 { v - v.floor() } else { v }
+}
+
 /// The triangle wave of period 1 rising from 0 at integers to 1 at half-integers.
 fn unit_triangle(v: f64) -> f64 {
     let f = v - v.floor();
@@ -137,7 +145,7 @@ fn inner_generator(generator: u8) -> u8 {
 
 fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
     match &pattern.kind {
-        PatternKind::Gradient(g) => p.dot(*g),
+        PatternKind::Gradient(g) => gradient_value(p.dot(*g)),
         PatternKind::Onion => p.length(),
         PatternKind::Radial => 0.25 + (p.x.atan2(p.z) + PI) / TAU,
         PatternKind::Leopard => {
@@ -386,6 +394,25 @@ mod tests {
         assert_eq!(b(2.0, -1.5, -0.25), 0);
         assert_eq!(b(2.0, 2.75, 1.0), 0);
         assert_eq!(b(0.0, f64::NAN, 0.0), 0);
+    }
+
+    #[test]
+    fn gradient_wraps_like_povray_at_integers() {
+        // povray's values on planes `gradient y` at these heights (16-bit linear output).
+        let p = Pattern::new(PatternKind::Gradient(DVec3::Y));
+        let at = |y: f64| pattern_value(&p, DVec3::new(0.0, y, 0.0));
+        for (y, want) in [
+            (1.25, 0.25),
+            (2.0, 0.0),
+            (3.0, 0.0),
+            (1.0, 1.0),
+            (0.25, 0.25),
+        ] {
+            assert!((at(y) - want).abs() < 1e-9, "y = {y}: {}", at(y));
+        }
+        for (y, want) in [(-0.5, 0.50001), (-0.25, 0.75001), (-2.0, 0.00002)] {
+            assert!((at(y) - want).abs() < 1e-6, "y = {y}: {}", at(y));
+        }
     }
 
     #[test]
