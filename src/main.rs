@@ -191,6 +191,10 @@ struct CorpusArgs {
     render_timeout: u64,
     #[arg(long, default_value_t = 1200)]
     reference_timeout: u64,
+    /// Failures whose reason is written down, `scene | reason` per line (default:
+    /// tests/corpus/known-differences.txt when it exists).
+    #[arg(long)]
+    known: Option<PathBuf>,
     /// Measure in alphabetical order instead of cheapest first (by a 1-sample probe).
     #[arg(long)]
     by_name: bool,
@@ -646,6 +650,7 @@ fn corpus(args: CorpusArgs) -> Result<ExitCode, String> {
             reference: args.reference_timeout,
         },
         cheap_first: !args.by_name,
+        known: read_known(args.known.as_deref())?,
     };
     let rows = corpus::run(&request, &StderrLog { quiet: false }).map_err(text)?;
     let passed = rows
@@ -666,6 +671,19 @@ fn corpus(args: CorpusArgs) -> Result<ExitCode, String> {
 /// Errors reach the user as their message.
 fn text(error: impl std::fmt::Display) -> String {
     error.to_string()
+}
+
+/// The known-differences list: the given file, or the default one if it exists.
+fn read_known(path: Option<&Path>) -> Result<Vec<corpus::known::Known>, String> {
+    let default = Path::new("tests/corpus/known-differences.txt");
+    let path = match path {
+        Some(p) => p,
+        None if default.exists() => default,
+        None => return Ok(Vec::new()),
+    };
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    corpus::known::parse_known(&text).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 fn load_options(args: &SceneArgs, width: u32, height: u32, max_memory: Option<u64>) -> LoadOptions {

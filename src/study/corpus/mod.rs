@@ -13,6 +13,7 @@
 
 pub mod exec;
 pub mod judge;
+pub mod known;
 pub mod report;
 pub mod scan;
 
@@ -55,6 +56,8 @@ pub struct CorpusRequest {
     /// interrupted sweep has measured as many scenes as it could (the table stays sorted by
     /// name).
     pub cheap_first: bool,
+    /// Failures whose reason is written down (tests/corpus/known-differences.txt).
+    pub known: Vec<known::Known>,
 }
 
 /// Time limits in seconds.
@@ -104,7 +107,8 @@ pub struct Row {
     pub scene: String,
     pub parse: ParseStatus,
     pub test: TestKind,
-    /// POV-Ray reads this INI with the scene (penumbra has no INI files).
+    /// POV-Ray reads this INI with the scene (its first frame); penumbra renders the scene
+    /// alone, at clock 0 (no INI of a parsing scene sets a clock or a declaration).
     pub ini: Option<PathBuf>,
     pub outcome: Outcome,
     /// penumbra's K renders, wall time summed.
@@ -112,6 +116,8 @@ pub struct Row {
     /// POV-Ray's k render (from the cached reference).
     pub povray_seconds: Option<f64>,
     pub cached: bool,
+    /// The reason written down for this scene's failure, if any.
+    pub known: Option<String>,
 }
 
 impl Row {
@@ -125,6 +131,7 @@ impl Row {
             penumbra_seconds: None,
             povray_seconds: None,
             cached: false,
+            known: None,
         }
     }
 }
@@ -140,7 +147,13 @@ pub fn run(req: &CorpusRequest, log: &dyn Log) -> Result<Vec<Row>, StudyError> {
     let scenes = scan::list_scenes(&req.scenes_dir).map_err(io(&req.scenes_dir))?;
     std::fs::create_dir_all(req.cache.join("references")).map_err(io(&req.cache))?;
     let version = exec::povray_version();
-    let mut rows: Vec<Row> = scenes.iter().map(|s| Row::new(s)).collect();
+    let mut rows: Vec<Row> = scenes
+        .iter()
+        .map(|s| Row {
+            known: known::reason(&req.known, s).map(str::to_string),
+            ..Row::new(s)
+        })
+        .collect();
     for row in &mut rows {
         prepare(req, row);
     }

@@ -65,6 +65,16 @@ pub fn write(context: &Context, rows: &[Row], finished: bool) -> Result<(), Stud
     })
 }
 
+/// The written reason of a failing scene (tests/corpus/known-differences.txt).
+fn known_reason(row: &Row) -> Option<&str> {
+    row.known.as_deref()
+}
+
+fn fails(row: &Row) -> bool {
+    matches!(&row.outcome, Outcome::Judged(j) if !j.passes())
+        || matches!(row.outcome, Outcome::RenderFailed(_))
+}
+
 /// Short words for the table's result column.
 pub fn result_text(row: &Row) -> String {
     match (&row.parse, &row.outcome) {
@@ -72,6 +82,9 @@ pub fn result_text(row: &Row) -> String {
         (ParseStatus::Parsed, Outcome::RenderFailed(_)) => "penumbra failed".into(),
         (ParseStatus::Parsed, Outcome::ReferenceFailed(_)) => "POV-Ray failed".into(),
         (ParseStatus::Parsed, Outcome::Judged(j)) if j.passes() => "pass".into(),
+        (ParseStatus::Parsed, Outcome::Judged(_)) if known_reason(row).is_some() => {
+            "fail, reason known".into()
+        }
         (ParseStatus::Parsed, Outcome::Judged(_)) => "**FAIL**".into(),
         _ => "does not parse".into(),
     }
@@ -135,7 +148,13 @@ fn detail_text(row: &Row) -> String {
     if row.ini.is_some() {
         text.push_str(" (POV-Ray with its INI)");
     }
-    text
+    match known_reason(row) {
+        Some(reason) if fails(row) => format!("{}; {text}", reason.replace('|', "\\|")),
+        Some(_) if matches!(row.outcome, Outcome::Judged(_)) => {
+            format!("{text} (passes: its entry in known-differences.txt can go)")
+        }
+        _ => text,
+    }
 }
 
 fn seconds(value: Option<f64>) -> String {
@@ -165,6 +184,14 @@ fn counts(rows: &[Row]) -> String {
         (
             "fail, distribution test",
             count(&|r| judged(r, false, false)),
+        ),
+        (
+            "fail, with the reason written down",
+            count(&|r| fails(r) && known_reason(r).is_some()),
+        ),
+        (
+            "fail, unexplained",
+            count(&|r| fails(r) && known_reason(r).is_none()),
         ),
         (
             "penumbra failed to render",
@@ -291,8 +318,9 @@ fn gallery(req: &CorpusRequest, rows: &[Row]) -> String {
         {
             let _ = write!(
                 s,
-                "\n### {}\n\n{}\n\n![{}]({}/{}.png)\n",
+                "\n### {}\n\n{}{}\n\n![{}]({}/{}.png)\n",
                 row.scene,
+                known_reason(row).map_or_else(String::new, |r| format!("Reason: {r}\n\n")),
                 j.summary().replace('|', "\\|"),
                 row.scene,
                 dir_name,

@@ -254,12 +254,17 @@ fn the_report_has_every_row_and_the_counts() {
         penumbra: PathBuf::from("penumbra"),
         timeouts: Timeouts::default(),
         cheap_first: true,
+        known: Vec::new(),
     };
     let mut rows = vec![
         Row::new("a/parsed.pov"),
         Row::new("a/unsupported.pov"),
         Row::new("b/broken.pov"),
+        Row::new("c/explained.pov"),
     ];
+    rows[3].parse = ParseStatus::Parsed;
+    rows[3].outcome = Outcome::RenderFailed("penumbra failed".into());
+    rows[3].known = Some("a feature not yet supported".into());
     rows[0].parse = ParseStatus::Parsed;
     rows[1].parse = ParseStatus::Unsupported("error: unsupported: `text` | x".into());
     rows[2].parse = ParseStatus::Parsed;
@@ -278,6 +283,15 @@ fn the_report_has_every_row_and_the_counts() {
     assert!(
         text.contains("| b/broken.pov | yes | pixel | penumbra failed | penumbra panicked: boom")
     );
-    assert!(text.contains("| parse | 2 |") && text.contains("| penumbra failed to render | 1 |"));
+    assert!(text.contains("| parse | 3 |") && text.contains("| penumbra failed to render | 2 |"));
+    assert!(
+        text.contains("| fail, with the reason written down | 1 |"),
+        "{text}"
+    );
+    assert!(text.contains("| fail, unexplained | 1 |"), "{text}");
+    assert!(
+        text.contains("a feature not yet supported; penumbra failed"),
+        "{text}"
+    );
     assert!(text.contains("interrupted or still running"));
 }
