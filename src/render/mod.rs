@@ -3,6 +3,7 @@
 
 pub mod dimensions;
 pub mod film;
+pub mod fog;
 pub mod integrator;
 pub mod lights;
 pub mod prepared;

@@ -42,6 +42,8 @@ pub struct Material {
     /// Which interior this is: the parts of one object given an `interior` share it, as in
     /// POV-Ray, where a ray inside that interior that meets any of its parts leaves it.
     pub interior_id: u32,
+    /// `hollow`: fog goes on inside the object.
+    pub hollow: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -52,6 +54,8 @@ pub struct PreparedScene {
     pub camera: Camera,
     pub background: Colour,
     pub sky_sphere: Option<SkySphere>,
+    /// The fogs that apply (distance > 0).
+    pub fogs: Vec<crate::scene::Fog>,
     pub settings: GlobalSettings,
     pub legacy: bool,
     /// Scenes with `assumed_gamma g` (g != 1), and pre-3.7 scenes without one, are computed
@@ -96,6 +100,12 @@ impl PreparedScene {
             camera: scene.camera.clone(),
             background: scene.background,
             sky_sphere: scene.sky_sphere.clone(),
+            fogs: scene
+                .fogs
+                .iter()
+                .filter(|f| f.distance > 0.0)
+                .cloned()
+                .collect(),
             settings: scene.settings.clone(),
             legacy: scene.legacy(),
             output_gamma: match (scene.legacy(), scene.settings.assumed_gamma) {
@@ -285,6 +295,7 @@ impl Builder {
             transmits: may_transmit(looks.texture),
             interior: *interior,
             interior_id,
+            hollow: looks.flags.hollow,
         });
         (self.materials.len() - 1) as u32
     }

@@ -4,11 +4,13 @@
 //! Nothing in this module knows how to render.
 
 mod camera;
+mod fog;
 mod light;
 mod object;
 mod texture;
 
 pub use camera::{Camera, CameraSpec};
+pub use fog::{Fog, FogKind, FogTurbulence};
 pub use light::{AreaLight, Light, LightKind};
 pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
 pub use texture::{
@@ -97,6 +99,8 @@ pub struct Scene {
     pub background: Colour,
     /// Seen by rays that hit nothing, by direction, over the background.
     pub sky_sphere: Option<SkySphere>,
+    /// Every `fog { }`, in order (their effects combine: see render::fog).
+    pub fogs: Vec<Fog>,
     pub settings: GlobalSettings,
     /// The `#version` in force at the end of parsing; below 3.7 some formulas differ.
     pub version: f64,
@@ -110,6 +114,7 @@ impl Default for Scene {
             objects: Vec::new(),
             background: Colour::BLACK,
             sky_sphere: None,
+            fogs: Vec::new(),
             settings: GlobalSettings::default(),
             version: 3.7,
         }

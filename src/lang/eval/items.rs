@@ -12,7 +12,7 @@ use crate::scene::{AreaLight, CameraSpec, Light, LightKind};
 type R<T> = Result<T, Diagnostic>;
 
 /// Features POV-Ray has at the top level that penumbra does not model yet.
-const UNSUPPORTED_ITEMS: &[&str] = &["fog", "rainbow", "media", "photons", "radiosity"];
+const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "media", "photons", "radiosity"];
 
 impl Evaluator<'_> {
     pub(super) fn item(&mut self) -> R<()> {
@@ -35,6 +35,10 @@ impl Evaluator<'_> {
             "sky_sphere" => {
                 let sky = self.sky_sphere()?;
                 self.scene.sky_sphere = Some(sky);
+            }
+            "fog" => {
+                let fog = self.fog()?;
+                self.scene.fogs.push(fog);
             }
             // POV-Ray still reads the old form of `#default` without the `#`.
             "default" => {
@@ -124,6 +128,7 @@ impl Evaluator<'_> {
             })),
             "camera" => Value::Camera(Box::new(self.camera_block()?)),
             "sky_sphere" => Value::SkySphere(Box::new(self.sky_sphere()?)),
+            "fog" => Value::Fog(Box::new(self.fog()?)),
             "pigment" => {
                 self.next()?;
                 Value::Pigment(Box::new(

@@ -14,6 +14,7 @@
 pub mod budget;
 mod directives;
 mod expr;
+mod fog;
 mod functions;
 mod items;
 mod keywords;

@@ -96,6 +96,7 @@ pub enum Value {
     Transform(Box<Transform>),
     Macro(Rc<MacroDef>),
     SkySphere(Box<crate::scene::SkySphere>),
+    Fog(Box<crate::scene::Fog>),
     Array(Rc<std::cell::RefCell<ArrayValue>>),
     /// A declaration that used a feature penumbra lacks. Include files declare many things
     /// a scene never uses, so the error waits until the identifier is used.
@@ -130,6 +131,7 @@ impl Value {
             Value::Transform(_) => "a transform",
             Value::Macro(_) => "a macro",
             Value::SkySphere(_) => "a sky_sphere",
+            Value::Fog(_) => "a fog",
             Value::Array(_) => "an array",
             Value::Unsupported(_) => "an unsupported value",
         }

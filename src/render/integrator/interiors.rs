@@ -12,6 +12,8 @@ const DEPTH: usize = 8;
 pub(super) struct InteriorStack {
     ids: [u32; DEPTH],
     iors: [f64; DEPTH],
+    /// Bit k: slot k is a solid (not `hollow`) object, where POV-Ray computes no fog.
+    solid: u8,
     len: usize,
 }
 
@@ -19,6 +21,7 @@ impl InteriorStack {
     pub(super) const OUTSIDE: InteriorStack = InteriorStack {
         ids: [u32::MAX; DEPTH],
         iors: [1.0; DEPTH],
+        solid: 0,
         len: 0,
     };
 
@@ -35,13 +38,20 @@ impl InteriorStack {
         self.ids[..self.len].contains(&id)
     }
 
-    pub(super) fn entered(&self, id: u32, ior: f64) -> InteriorStack {
+    pub(super) fn entered(&self, id: u32, ior: f64, hollow: bool) -> InteriorStack {
         let mut m = *self;
         let slot = m.len.min(DEPTH - 1);
         m.ids[slot] = id;
         m.iors[slot] = ior;
+        m.solid = (m.solid & !(1 << slot)) | (u8::from(!hollow) << slot);
         m.len = slot + 1;
         m
+    }
+
+    /// Whether the ray travels through the atmosphere, where fog applies: inside no solid
+    /// object (POV-Ray's atmosphere stops at non-hollow objects).
+    pub(super) fn in_atmosphere(&self) -> bool {
+        self.solid & ((1u16 << self.len) - 1) as u8 == 0
     }
 
     /// Without the interior `id` (the innermost one when the ray did not know it was in it,
@@ -52,6 +62,8 @@ impl InteriorStack {
             Some(k) => {
                 m.ids.copy_within(k + 1..m.len, k);
                 m.iors.copy_within(k + 1..m.len, k);
+                let below = m.solid & ((1u8 << k) - 1);
+                m.solid = below | ((m.solid >> 1) & !((1u8 << k) - 1));
                 m.len -= 1;
             }
             None => m.len = m.len.saturating_sub(1),
@@ -66,8 +78,8 @@ mod tests {
 
     #[test]
     fn entering_and_leaving_nest() {
-        let glass = InteriorStack::OUTSIDE.entered(1, 1.5);
-        let water = glass.entered(2, 1.33);
+        let glass = InteriorStack::OUTSIDE.entered(1, 1.5, false);
+        let water = glass.entered(2, 1.33, false);
         assert_eq!(water.current(), 1.33);
         // Leaving the outer interior first keeps the inner one.
         let w = water.left(1);
@@ -80,10 +92,25 @@ mod tests {
     }
 
     #[test]
+    fn fog_stops_inside_solid_objects_only() {
+        let outside = InteriorStack::OUTSIDE;
+        assert!(outside.in_atmosphere());
+        let hollow = outside.entered(1, 1.0, true);
+        assert!(hollow.in_atmosphere());
+        let glass = hollow.entered(2, 1.5, false);
+        assert!(!glass.in_atmosphere());
+        // Leaving the solid glass (the inner slot) restores the hollow one's atmosphere;
+        // leaving the hollow one first keeps the glass solid, in its new slot.
+        assert!(glass.left(2).in_atmosphere());
+        assert!(!glass.left(1).in_atmosphere());
+        assert!(glass.left(1).left(2).in_atmosphere());
+    }
+
+    #[test]
     fn too_deep_nesting_replaces_the_innermost() {
         let mut s = InteriorStack::OUTSIDE;
         for id in 0..20 {
-            s = s.entered(id, 1.0 + id as f64);
+            s = s.entered(id, 1.0 + id as f64, false);
         }
         assert_eq!(s.current(), 20.0);
         assert!(s.contains(19) && !s.contains(8));

@@ -31,6 +31,7 @@ use super::dimensions::{DimensionLayout, Purpose};
 use super::lights::{AreaLightMode, LightSamples};
 use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
+use crate::render::fog::{Segment, fog_effect};
 use direct::ShadedLayer;
 use interiors::InteriorStack;
 use optics::{fade, mirror_direction};
@@ -210,10 +211,21 @@ impl<'a> Integrator<'a> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
-        match self.scene.world.intersect(ray, f64::INFINITY, path.skip) {
-            Some(hit) => self.shade(&self.shading(ray, &hit, path), sampler, counts),
+        let hit = self.scene.world.intersect(ray, f64::INFINITY, path.skip);
+        let seen = match &hit {
+            Some(hit) => self.shade(&self.shading(ray, hit, path), sampler, counts),
             None => self.sky(ray.direction),
+        };
+        if self.scene.fogs.is_empty() || !path.interiors.in_atmosphere() {
+            return seen;
         }
+        let scale = ray.direction.length();
+        let segment = Segment {
+            origin: ray.origin,
+            direction: ray.direction / scale,
+            length: hit.map_or(f64::INFINITY, |h| h.t * scale),
+        };
+        fog_effect(&self.scene.fogs, &segment).apply(seen)
     }
 
     fn shading(&self, ray: &Ray, hit: &Hit, path: Path) -> Shading<'a> {
@@ -524,7 +536,11 @@ fn crossing(s: &Shading) -> (f64, f64, InteriorStack) {
         };
         (from, beyond.current(), beyond)
     } else {
-        (inside.current(), ior, inside.entered(id, ior))
+        (
+            inside.current(),
+            ior,
+            inside.entered(id, ior, s.material.hollow),
+        )
     }
 }
 
