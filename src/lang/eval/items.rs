@@ -293,8 +293,14 @@ impl Evaluator<'_> {
                         match word.as_str() {
                             "location" => spec.location = v,
                             "look_at" => spec.look_at = Some(v),
-                            "right" => spec.right = v,
-                            "up" => spec.up = v,
+                            "right" => {
+                                spec.right = v;
+                                spec.up_or_right_given = true;
+                            }
+                            "up" => {
+                                spec.up = v;
+                                spec.up_or_right_given = true;
+                            }
                             "direction" => spec.direction = v,
                             _ => spec.sky = v,
                         }
