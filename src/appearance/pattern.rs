@@ -34,16 +34,26 @@ const WRAP: f64 = 1.00001;
 
 /// Applies the warp chain (innermost last in the list is applied first to the point, so
 /// later modifiers move what the earlier ones built) and the classic turbulence.
-pub fn warp_point(pattern: &Pattern, mut p: DVec3) -> DVec3 {
-    for w in pattern.warps.iter().rev() {
+pub fn warp_point(pattern: &Pattern, p: DVec3) -> DVec3 {
+    let turbulence = pattern
+        .turbulence
+        .as_ref()
+        .filter(|_| !pattern.kind.handles_turbulence());
+    warp_chain(&pattern.warps, turbulence, p)
+}
+
+/// A warp chain and classic turbulence on their own, for pigments without a pattern
+/// (image maps). Classic turbulence comes last, in the innermost pattern space, wherever
+/// it was written among the transforms (measured: POV-Ray's warp1.pov renders
+/// `turbulence t rotate r` and `rotate r turbulence t` alike).
+pub fn warp_chain(warps: &[Warp], turbulence: Option<&Turbulence>, mut p: DVec3) -> DVec3 {
+    for w in warps.iter().rev() {
         p = match w {
             Warp::Transform(t) => t.inverse_point(p),
             Warp::Turbulence(t) => p + dturbulence(p, t) * t.amount,
         };
     }
-    if let Some(t) = &pattern.turbulence
-        && !pattern.kind.handles_turbulence()
-    {
+    if let Some(t) = turbulence {
         p += dturbulence(p, t) * t.amount;
     }
     p

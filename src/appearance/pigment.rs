@@ -1,7 +1,7 @@
 use glam::{DVec2, DVec3};
 
 use super::blend::{Blend, blend_position, mix};
-use super::pattern::{pattern_index, pattern_value};
+use super::pattern::{pattern_index, pattern_value, warp_chain};
 use std::f64::consts::{PI, TAU};
 
 use crate::geometry::TexturePoint;
@@ -40,7 +40,10 @@ fn pigment_at(pigment: &Pigment, world: DVec3, uv: DVec2) -> Colour {
                 Blend::None => Colour::BLACK,
             }
         }
-        PigmentKind::Image(im) => image_colour(im, pigment.transform.inverse_point(world)),
+        PigmentKind::Image(im) => {
+            let p = pigment.transform.inverse_point(world);
+            image_colour(im, warp_chain(&im.warps, im.turbulence.as_ref(), p))
+        }
         PigmentKind::PigmentMap { pattern, map } => {
             let p = pigment.transform.inverse_point(world);
             let v = pattern_value(pattern, p);

@@ -192,3 +192,46 @@ fn diagnostics_can_cross_threads() {
     fn assert_send_sync<T: Send + Sync + std::error::Error>() {}
     assert_send_sync::<Diagnostic>();
 }
+
+/// An image map takes turbulence and warps like a pattern (POV-Ray's warp1.pov): the
+/// transform written before a `warp` joins the warp chain instead of being dropped.
+#[test]
+fn image_map_keeps_its_warps() {
+    use crate::appearance::pigment::evaluate_pigment;
+    use crate::scene::{Colour, PigmentKind, Warp};
+    use glam::DVec3;
+    let dir = crate::study::TempDir::new("image-warps").unwrap();
+    let mut img = image::RgbImage::new(2, 1);
+    img.put_pixel(0, 0, image::Rgb([255, 0, 0]));
+    img.put_pixel(1, 0, image::Rgb([0, 0, 255]));
+    img.save(dir.path().join("two.png")).unwrap();
+    let source = "plane { z, 0 pigment { image_map { png \"two.png\" } scale 4 \
+        warp { turbulence 0 } turbulence 0.3 octaves 3 } }";
+    let scene_path = dir.path().join("scene.pov").display().to_string();
+    let loaded = load_inner(
+        &scene_path,
+        source,
+        &LoadOptions::default(),
+        &FileSystem,
+        false,
+    )
+    .unwrap();
+    let texture = loaded.scene.objects[0].texture.as_ref().expect("a texture");
+    let pigment = &texture.pigment;
+    let PigmentKind::Image(im) = &pigment.kind else {
+        panic!("not an image: {pigment:?}");
+    };
+    assert!(matches!(
+        im.warps[..],
+        [Warp::Transform(_), Warp::Turbulence(_)]
+    ));
+    let t = im.turbulence.expect("classic turbulence kept");
+    assert_eq!((t.amount, t.octaves), (DVec3::splat(0.3), 3));
+    // x = 3 is 3/4 across the scaled image: the blue pixel.
+    let mut plain = pigment.clone();
+    if let PigmentKind::Image(im) = &mut plain.kind {
+        im.turbulence = None;
+    }
+    let c = evaluate_pigment(&plain, DVec3::new(3.0, 0.5, 0.0));
+    assert_eq!(c, Colour::rgb(0.0, 0.0, 1.0));
+}

@@ -41,6 +41,9 @@ pub struct CameraSpec {
     /// POV-Ray's rays per pixel for blur; penumbra's lens samples are the pixel's samples.
     pub blur_samples: u32,
     pub orthographic: bool,
+    /// Whether the camera block wrote `up` or `right`: without them (or with `angle`) an
+    /// orthographic camera takes its size from the distance to `look_at`.
+    pub up_or_right_given: bool,
     pub transform: Transform,
 }
 
@@ -58,6 +61,7 @@ impl Default for CameraSpec {
             focal_point: DVec3::ZERO,
             blur_samples: 0,
             orthographic: false,
+            up_or_right_given: false,
             transform: Transform::IDENTITY,
         }
     }
@@ -89,6 +93,20 @@ impl CameraSpec {
             direction = d * dl;
             right = r * if handedness < 0.0 { -rl } else { rl };
             up = u * ul;
+        }
+        if self.orthographic && (self.angle.is_some() || !self.up_or_right_given) {
+            // POV-Ray's documented second orthographic mode: the same image area as the
+            // perspective camera would show at the look_at distance. Measured with POV-Ray
+            // 3.7: the width is |right| * distance / |direction| (2 distance tan(angle / 2)
+            // with `angle`), up scales alike, and without `look_at` the distance is to
+            // POV-Ray's default look_at <0, 0, 1>.
+            let look_at = self.look_at.unwrap_or(DVec3::Z);
+            let dl = direction.length();
+            let scale = (look_at - self.location).length() / dl;
+            if dl > 0.0 && scale > 0.0 && scale.is_finite() {
+                right *= scale;
+                up *= scale;
+            }
         }
         let t = &self.transform;
         Camera {

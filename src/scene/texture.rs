@@ -239,6 +239,10 @@ pub struct ImageMap {
     pub once: bool,
     pub filter_all: f64,
     pub transmit_all: f64,
+    /// The pigment's classic turbulence and warp chain: an image has no pattern to hold
+    /// them, yet POV-Ray warps the image's space like any pattern's.
+    pub turbulence: Option<Turbulence>,
+    pub warps: Vec<Warp>,
 }
 
 /// A pigment with the transform from pattern space to world space.

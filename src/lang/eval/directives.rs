@@ -505,10 +505,16 @@ impl Evaluator<'_> {
     }
 
     /// Skips the right-hand side of a declaration as written: a balanced `{ }` block, or
-    /// tokens up to a `;` or the next directive.
+    /// tokens up to a `;`, the next directive or the keyword of the next statement (so a
+    /// macro call's value, `M(1)`, does not swallow the object written after it).
     fn skip_declaration_raw(&mut self) {
         let mut depth = 0usize;
+        let mut first = true;
         while let Some(tok) = self.raw_peek(0).cloned() {
+            if depth == 0 && !first && tok.ident().is_some_and(super::items::starts_statement) {
+                return;
+            }
+            first = false;
             match &tok.kind {
                 TokenKind::Punct(Punct::LBrace | Punct::LParen | Punct::LBracket) => depth += 1,
                 TokenKind::Punct(Punct::RBrace | Punct::RParen | Punct::RBracket) => {

@@ -298,8 +298,14 @@ impl Evaluator<'_> {
                         match word.as_str() {
                             "location" => spec.location = v,
                             "look_at" => spec.look_at = Some(v),
-                            "right" => spec.right = v,
-                            "up" => spec.up = v,
+                            "right" => {
+                                spec.right = v;
+                                spec.up_or_right_given = true;
+                            }
+                            "up" => {
+                                spec.up = v;
+                                spec.up_or_right_given = true;
+                            }
                             "direction" => spec.direction = v,
                             _ => spec.sky = v,
                         }
@@ -736,3 +742,12 @@ fn kind_of(
 
 /// Items that are only valid at the top of a file: inside a block they mean a `}` is missing.
 const TOP_LEVEL_ONLY: &[&str] = &["camera", "global_settings", "background", "light_source"];
+
+/// Whether a word begins a scene statement (an object, a light, the camera ...), which no
+/// value's expression can continue with.
+pub fn starts_statement(word: &str) -> bool {
+    TOP_LEVEL_ONLY.contains(&word)
+        || matches!(word, "sky_sphere" | "fog" | "rainbow")
+        || super::objects::is_object_keyword(word)
+        || super::objects::is_known_unsupported_shape(word)
+}

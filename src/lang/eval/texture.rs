@@ -378,11 +378,16 @@ impl Evaluator<'_> {
             return Ok(false);
         }
         let tok = self.next()?;
+        let mut image = None;
         let (pattern, transform) = match target {
             Modified::Pigment(p) => {
                 let t = &mut p.transform;
                 match &mut p.kind {
-                    PigmentKind::Solid(_) | PigmentKind::Image(_) => (None, t),
+                    PigmentKind::Solid(_) => (None, t),
+                    PigmentKind::Image(im) => {
+                        image = Some(im);
+                        (None, t)
+                    }
                     PigmentKind::List { pattern, .. }
                     | PigmentKind::ColourMap { pattern, .. }
                     | PigmentKind::PigmentMap { pattern, .. } => (Some(pattern), t),
@@ -396,14 +401,29 @@ impl Evaluator<'_> {
                 }
             },
         };
-        // Without a pattern (a plain colour) the item is read and has no effect.
+        // Without a pattern (a plain colour) the item is read and has no effect; an image
+        // keeps the turbulence and warps it gets.
         let mut scratch = Pattern::new(PatternKind::Bozo);
-        let pattern = pattern.unwrap_or(&mut scratch);
-        if let Some((_, read)) = item {
-            return read(self, pattern).map(|()| true);
+        if let Some(im) = &mut image {
+            scratch.turbulence = im.turbulence.take();
+            scratch.warps = std::mem::take(&mut im.warps);
         }
-        // warp { turbulence ... }: transforms written before it are warped with the
-        // pattern, so they move into the warp chain.
+        let pattern = pattern.unwrap_or(&mut scratch);
+        let read = if let Some((_, read)) = item {
+            read(self, pattern)
+        } else {
+            self.warp_into(pattern, transform)
+        };
+        if let Some(im) = image {
+            im.turbulence = scratch.turbulence;
+            im.warps = scratch.warps;
+        }
+        read.map(|()| true)
+    }
+
+    /// `warp { turbulence ... }`: transforms written before it are warped with the
+    /// pattern, so they move into the warp chain.
+    fn warp_into(&mut self, pattern: &mut Pattern, transform: &mut Transform) -> R<()> {
         if let Some(w) = self.warp_block()? {
             if !transform.is_identity() {
                 pattern.warps.push(Warp::Transform(*transform));
@@ -411,7 +431,7 @@ impl Evaluator<'_> {
             }
             pattern.warps.push(w);
         }
-        Ok(true)
+        Ok(())
     }
 
     /// `warp { turbulence v octaves n omega w lambda l }`; other warps are unsupported.
@@ -1046,6 +1066,8 @@ impl Evaluator<'_> {
                 once: false,
                 filter_all: 0.0,
                 transmit_all: 0.0,
+                turbulence: None,
+                warps: Vec::new(),
             };
             loop {
                 let tok = self.peek()?;
