@@ -8,22 +8,22 @@
 //! - Several fogs: the factors multiply and the added colours add, whatever their order
 //!   (two fogs, either order: 0.8095 0.4721 0.4093, matched).
 //! - Ground fog: w is the integral of the density along the segment, density 1 up to
-//!   fog_offset along `up` and 1 / (1 + (h - offset) / alt)^2 above (POV-Ray's docs).
+//!   fog_offset along `up` and 1 / (1 + u^2) above, u = (h - offset) / alt (measured on
+//!   horizontal rays at u = 0.25, 0.5, 1, 2, 4: 0.941, 0.800, 0.500, 0.200, 0.0588; the
+//!   docs' "25% at offset + alt" describes 1 / (1 + u)^2, which POV-Ray 3.7 does not do).
 //! - Turbulence changes w, not the density: `w (1 - k min(1, turb_depth T))` with
-//!   k = exp(-w / distance) and T a fractal sum of noise read at the point turb_depth of the
-//!   way along the segment, scaled by the turbulence vector. Measured: at w = distance
-//!   and at 2 distance the implied `turb_depth T` has the same quantiles; it scales with
-//!   turb_depth (0.01, 0.25, 1) and clamps at 1; the turbulence amount changes only its
-//!   scale in space.
+//!   k = exp(-d / distance) for the segment's length d (not w: ground fog at distances 5,
+//!   10 and 40 gives the same implied T only so) and T a fractal sum of noise read at the
+//!   point turb_depth of the way along the segment, scaled by the turbulence vector.
+//!   Measured on constant fog: at d = distance and at 2 distance the implied
+//!   `turb_depth T` has the same quantiles; it scales with turb_depth (0.01, 0.25, 1) and
+//!   clamps at 1; the turbulence amount changes only its scale in space. A ray that hits
+//!   nothing has k = 0: its turbulence does nothing.
 
 use glam::DVec3;
 
 use crate::appearance::noise::fog_turbulence;
 use crate::scene::{Fog, FogKind};
-
-/// Where the turbulence of a ray that hits nothing is read: POV-Ray takes a huge depth,
-/// which puts the point far out in the noise, where it looks like fine grain.
-const BACKGROUND_DEPTH: f64 = 1e7;
 
 /// What the fogs do to the light behind a segment: multiply it, then add.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -70,14 +70,10 @@ fn attenuation(fog: &Fog, segment: &Segment) -> f64 {
     };
     if let Some(turb) = &fog.turbulence
         && width.is_finite()
+        && segment.length.is_finite()
     {
-        let k = (-width / fog.distance).exp();
-        let depth = if segment.length.is_finite() {
-            segment.length
-        } else {
-            BACKGROUND_DEPTH
-        };
-        let p = segment.origin + segment.direction * (depth * turb.depth);
+        let k = (-segment.length / fog.distance).exp();
+        let p = segment.origin + segment.direction * (segment.length * turb.depth);
         let q = fog.transform.inverse_point(p) * turb.turbulence.amount;
         let t = (turb.depth * fog_turbulence(q, &turb.turbulence)).min(1.0);
         width *= 1.0 - k * t;
@@ -87,11 +83,9 @@ fn attenuation(fog: &Fog, segment: &Segment) -> f64 {
 
 /// The integral of the ground fog's density along the segment, in world units.
 fn ground_width(fog: &Fog, segment: &Segment, offset: f64, alt: f64) -> f64 {
-    let o = fog.transform.inverse_point(segment.origin);
-    let d = fog.transform.inverse_vector(segment.direction);
-    let h0 = fog.up.dot(o);
+    let h0 = fog.up.dot(segment.origin);
     // Height gained per world unit along the ray.
-    let slope = fog.up.dot(d);
+    let slope = fog.up.dot(segment.direction);
     let density0 = ground_density(h0, offset, alt);
     if !segment.length.is_finite() {
         return if slope > 0.0 {
@@ -114,20 +108,20 @@ fn ground_density(h: f64, offset: f64, alt: f64) -> f64 {
     if h <= offset {
         1.0
     } else if alt > 0.0 {
-        let r = 1.0 + (h - offset) / alt;
-        1.0 / (r * r)
+        let u = (h - offset) / alt;
+        1.0 / (1.0 + u * u)
     } else {
         0.0
     }
 }
 
-/// An antiderivative of the ground density in height: h below the offset, then the
-/// integral of 1 / (1 + u / alt)^2, which tends to alt.
+/// An antiderivative of the ground density in height: h below the offset, then
+/// alt atan(u), which tends to alt pi / 2.
 fn ground_integral(h: f64, offset: f64, alt: f64) -> f64 {
     if h <= offset {
         h
     } else if alt > 0.0 {
-        offset + alt * (1.0 - alt / (alt + h - offset))
+        offset + alt * ((h - offset) / alt).atan()
     } else {
         offset
     }
@@ -212,19 +206,20 @@ mod tests {
             length: 10.0,
         };
         assert!((ground_width(&g, &low, 1.0, 2.0) - 10.0).abs() < 1e-12);
-        // Horizontal at offset + alt: a quarter of the density.
+        // Horizontal at offset + alt: half the density (povray: 0.500).
         let high = Segment {
             origin: DVec3::new(0.0, 3.0, 0.0),
             ..low
         };
-        assert!((ground_width(&g, &high, 1.0, 2.0) - 2.5).abs() < 1e-12);
-        // Straight up from the ground to infinity: 1 (below the offset) + alt.
+        assert!((ground_width(&g, &high, 1.0, 2.0) - 5.0).abs() < 1e-12);
+        // Straight up from the ground to infinity: 1 (below the offset) + alt pi / 2.
         let up = Segment {
             origin: DVec3::ZERO,
             direction: DVec3::Y,
             length: f64::INFINITY,
         };
-        assert!((ground_width(&g, &up, 1.0, 2.0) - 3.0).abs() < 1e-12);
+        let expected = 1.0 + std::f64::consts::PI;
+        assert!((ground_width(&g, &up, 1.0, 2.0) - expected).abs() < 1e-12);
         // A slanted segment against a numerical integral of the density.
         let dir = DVec3::new(0.6, 0.8, 0.0);
         let s = Segment {

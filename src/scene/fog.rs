@@ -32,10 +32,12 @@ pub struct Fog {
     /// rgb: the fog's own colour; filter: how much of what is seen through it is tinted by
     /// that colour; transmit: the least that always shows through.
     pub colour: Colour,
-    /// The ground fog's up direction (unit).
+    /// The ground fog's up direction in world space (unit): the fog's transforms turn it,
+    /// but do not move the heights (measured: `translate` and `scale <1, 2, 1>` leave a
+    /// ground fog as it is, `rotate 90*z` turns it).
     pub up: DVec3,
     pub turbulence: Option<FogTurbulence>,
-    /// Where the fog's heights and turbulence are read: world points go through the inverse.
+    /// Where the turbulence is read: world points go through the inverse.
     pub transform: Transform,
 }
 

@@ -20,18 +20,32 @@ struct Draft {
     depth: f64,
 }
 
+impl From<Fog> for Draft {
+    /// A draft that starts from a fog (a declared one, or the defaults).
+    fn from(mut fog: Fog) -> Draft {
+        // Back to the fog's own up: the end of the block turns it by all the transforms.
+        fog.up = fog.transform.inverse_vector(fog.up).normalize_or(glam::DVec3::Y);
+        let (ground, offset, alt) = match fog.kind {
+            FogKind::Constant => (false, 0.0, 0.0),
+            FogKind::Ground { offset, alt } => (true, offset, alt),
+        };
+        let turb = fog.turbulence;
+        Draft {
+            ground,
+            offset,
+            alt,
+            turbulence: turb.map(|t| t.turbulence),
+            settings: turb.map_or_else(Turbulence::default, |t| t.turbulence),
+            depth: turb.map_or(0.5, |t| t.depth),
+            fog,
+        }
+    }
+}
+
 impl Evaluator<'_> {
     pub(super) fn fog(&mut self) -> R<Fog> {
         self.next()?;
-        let draft = Draft {
-            fog: Fog::default(),
-            ground: false,
-            offset: 0.0,
-            alt: 0.0,
-            turbulence: None,
-            settings: Turbulence::default(),
-            depth: 0.5,
-        };
+        let draft = Draft::from(Fog::default());
         let d = self.block_items("fog", "the fog", draft, |ev, tok, d| {
             let Some(word) = tok.ident() else {
                 return Err(ev.stray_in_block(tok, "the fog"));
@@ -46,12 +60,15 @@ impl Evaluator<'_> {
             Err(ev.stray_in_block(tok, "the fog"))
         })?;
         let mut fog = d.fog;
-        if d.ground {
-            fog.kind = FogKind::Ground {
+        fog.up = fog.transform.vector(fog.up).normalize_or(glam::DVec3::Y);
+        fog.kind = if d.ground {
+            FogKind::Ground {
                 offset: d.offset,
                 alt: d.alt,
-            };
-        }
+            }
+        } else {
+            FogKind::Constant
+        };
         fog.turbulence = d.turbulence.map(|amount| FogTurbulence {
             turbulence: Turbulence {
                 amount: amount.amount,
@@ -73,7 +90,7 @@ impl Evaluator<'_> {
             }
             _ if matches!(self.lookup(word), Some(Value::Fog(_))) => {
                 if let Some(Value::Fog(named)) = self.lookup(word).cloned() {
-                    d.fog = *named;
+                    *d = Draft::from(*named);
                 }
                 self.next()?;
                 return Ok(true);
