@@ -39,6 +39,9 @@ pub enum CsgOp {
     Difference,
     /// The first child's surface, kept where it is inside every other child (`clipped_by`).
     Clip,
+    /// The first child, for rays that meet every other child or start inside it
+    /// (`bounded_by` as POV-Ray applies it: a test of the ray, not of the hit point).
+    Bound,
 }
 
 #[derive(Clone, Debug)]
@@ -307,7 +310,7 @@ impl World {
             CsgOp::Union | CsgOp::Merge => {
                 children.try_fold(Aabb::EMPTY, |acc, b| Some(acc.union(&b?)))
             }
-            CsgOp::Difference => children.next().flatten(),
+            CsgOp::Difference | CsgOp::Bound => children.next().flatten(),
             CsgOp::Intersection | CsgOp::Clip => {
                 // Each bounded child limits the whole; unbounded ones do not.
                 let mut acc: Option<Aabb> = None;
@@ -383,6 +386,12 @@ impl World {
             return;
         }
         let node = &self.csg[(item & !CSG_BIT) as usize];
+        if node.op == CsgOp::Bound {
+            if self.ray_meets_bounds(&node.children[1..], ray) {
+                self.for_each_hit(node.children[0], ray, t_max, skip, f);
+            }
+            return;
+        }
         let surfaces = if node.op == CsgOp::Clip {
             &node.children[..1]
         } else {
@@ -402,7 +411,7 @@ impl World {
                     .filter(|&(j, _)| j != i)
                     .map(|(j, &c)| (j, self.inside(c, p)));
                 let keep = match node.op {
-                    CsgOp::Union => true,
+                    CsgOp::Union | CsgOp::Bound => true,
                     CsgOp::Merge => others.into_iter().all(|(_, inside)| !inside),
                     CsgOp::Intersection | CsgOp::Clip => {
                         others.into_iter().all(|(_, inside)| inside)
@@ -438,8 +447,16 @@ impl World {
             CsgOp::Union | CsgOp::Merge => children.any(|x| x),
             CsgOp::Intersection | CsgOp::Clip => children.all(|x| x),
             CsgOp::Difference => children.next().unwrap_or(false) && !children.any(|x| x),
+            CsgOp::Bound => children.next().unwrap_or(false),
         };
         inside ^ node.inverse
+    }
+
+    /// POV-Ray's bounding test: each bound is met ahead of the ray's origin or holds it.
+    fn ray_meets_bounds(&self, bounds: &[u32], ray: &Ray) -> bool {
+        bounds.iter().all(|&b| {
+            self.item_hit(b, ray, f64::INFINITY, 0).is_some() || self.inside(b, ray.origin)
+        })
     }
 
     /// The nearest hit in (0, t_max), ignoring primitives with any of the `skip` flags.
@@ -659,6 +676,33 @@ mod tests {
         // From inside the left sphere towards +x, the merge has no inner wall at x = 0.5 - 1.
         let t = first_hit(&w, DVec3::new(-1.0, 0.0, 0.0), DVec3::X).unwrap();
         assert!((t - 2.5).abs() < 1e-12, "{t}");
+    }
+
+    #[test]
+    fn a_bound_tests_the_ray_not_the_hit() {
+        // A plane x = 2 (unbounded) bounded by a unit sphere at the origin: rays through the
+        // sphere see the plane beyond it, rays that pass the sphere see nothing, and a ray
+        // starting inside the sphere passes the test too.
+        let mut b = WorldBuilder::default();
+        let plane = b.primitive(
+            ShapeKind::Plane {
+                normal: DVec3::X,
+                distance: 2.0,
+            },
+            &Transform::IDENTITY,
+            0,
+            0,
+        );
+        let bound = sphere_at(&mut b, 0.0, 1.0);
+        let item = b.csg(CsgOp::Bound, vec![plane, bound], false);
+        b.add_top(item);
+        let w = b.build();
+        let t = first_hit(&w, DVec3::new(-5.0, 0.0, 0.0), DVec3::X).unwrap();
+        assert!((t - 7.0).abs() < 1e-12, "{t}");
+        assert_eq!(first_hit(&w, DVec3::new(-5.0, 1.5, 0.0), DVec3::X), None);
+        assert!(first_hit(&w, DVec3::new(0.5, 0.0, 0.0), DVec3::X).is_some());
+        assert_eq!(first_hit(&w, DVec3::new(1.5, 0.0, 0.0), DVec3::X), None);
+        assert!(w.inside(item.0, DVec3::new(1.5, 5.0, 0.0)));
     }
 
     #[test]

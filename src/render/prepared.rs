@@ -215,6 +215,11 @@ impl Builder {
         } else {
             item
         };
+        let item = if object.bounded_by.is_empty() {
+            item
+        } else {
+            self.bounded(item, object, looks)
+        };
         if top {
             self.world.add_top(item);
         }
@@ -276,6 +281,19 @@ impl Builder {
             parts.extend(self.object(clip, clip_looks, false));
         }
         self.world.csg(CsgOp::Clip, parts, false)
+    }
+
+    /// `item` seen only by rays that meet the object's `bounded_by` shapes.
+    fn bounded(&mut self, item: Item, object: &Object, looks: Looks<'_>) -> Item {
+        let mut parts = vec![item];
+        let bound_looks = Looks {
+            flags: ObjectFlags::default(),
+            ..looks
+        };
+        for bound in &object.bounded_by {
+            parts.extend(self.object(bound, bound_looks, false));
+        }
+        self.world.csg(CsgOp::Bound, parts, false)
     }
 
     fn material(&mut self, looks: Looks<'_>) -> u32 {

@@ -133,6 +133,9 @@ pub struct Object {
     pub flags: ObjectFlags,
     /// `clipped_by { ... }`: only the parts of the surface inside all of these remain.
     pub clipped_by: Vec<Object>,
+    /// `bounded_by { ... }` where POV-Ray honours it: a ray that meets none of these (and
+    /// does not start inside them) misses the object, wherever the surface lies.
+    pub bounded_by: Vec<Object>,
 }
 
 impl Object {
@@ -144,6 +147,7 @@ impl Object {
             interior: None,
             flags: ObjectFlags::default(),
             clipped_by: Vec::new(),
+            bounded_by: Vec::new(),
         }
     }
 
@@ -161,7 +165,7 @@ impl Object {
                 child.transform_by(t);
             }
         }
-        for clip in &mut self.clipped_by {
+        for clip in self.clipped_by.iter_mut().chain(&mut self.bounded_by) {
             clip.transform_by(t);
         }
     }

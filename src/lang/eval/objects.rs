@@ -407,11 +407,16 @@ impl Evaluator<'_> {
                     clipped = clips;
                     true
                 }
-                // Bounds only speed POV-Ray up; penumbra builds its own, so they are read and
-                // kept only for `clipped_by { bounded_by }`.
+                // Bounds only speed POV-Ray up, and penumbra builds its own, except on a
+                // quartic, where POV-Ray keeps them and a ray that misses the bound misses
+                // the surface (measured: a poly sphere bounded by a smaller sphere shows the
+                // small sphere's outline). Infinite quartics are cut off this way.
                 "bounded_by" => {
                     self.next()?;
                     bounds = self.object_list("bounded_by", "clipped_by", &clipped)?;
+                    if matches!(object.shape, Shape::Quartic { .. }) {
+                        object.bounded_by.clone_from(&bounds);
+                    }
                     true
                 }
                 w => self.appearance_modifier(object, w)? || self.flag_modifier(object, &tok, w)?,
