@@ -459,6 +459,25 @@ impl World {
         })
     }
 
+    /// The materials of the top-level items whose solid holds `p` (for a CSG item, its first
+    /// primitive's): where the camera starts, as POV-Ray's interior list does.
+    pub fn containing(&self, p: DVec3) -> impl Iterator<Item = u32> + '_ {
+        self.bvh
+            .items
+            .iter()
+            .chain(&self.unbounded)
+            .filter(move |&&item| self.inside(item, p))
+            .filter_map(|&item| self.first_material(item))
+    }
+
+    fn first_material(&self, item: u32) -> Option<u32> {
+        if item & CSG_BIT == 0 {
+            return Some(self.primitives[item as usize].material);
+        }
+        let node = &self.csg[(item & !CSG_BIT) as usize];
+        node.children.first().and_then(|&c| self.first_material(c))
+    }
+
     /// The nearest hit in (0, t_max), ignoring primitives with any of the `skip` flags.
     pub fn intersect(&self, ray: &Ray, t_max: f64, skip: u8) -> Option<Hit> {
         let mut best: Option<Hit> = None;

@@ -159,6 +159,9 @@ pub struct Integrator<'a> {
     light_samples: LightSamples,
     /// POV-Ray's `+Q` level (see [`RenderOptions::quality`]).
     quality: u32,
+    /// The interiors the camera is in: camera rays start there (no fog inside a solid
+    /// object, and the index of refraction of a transparent one).
+    camera_interiors: InteriorStack,
 }
 
 /// `+Q` levels: from these on, POV-Ray shows diffuse light, shadows, area lights, and
@@ -178,6 +181,7 @@ impl<'a> Integrator<'a> {
             area_lights: options.area_lights,
             light_samples: options.light_samples,
             quality: options.quality,
+            camera_interiors: camera_interiors(scene),
         }
     }
 
@@ -193,7 +197,7 @@ impl<'a> Integrator<'a> {
             level: 1,
             weight: 1.0,
             skip: flags::NO_IMAGE,
-            interiors: InteriorStack::OUTSIDE,
+            interiors: self.camera_interiors,
         };
         let l = self.trace(ray, path, sampler, counts);
         match self.scene.output_gamma {
@@ -482,6 +486,18 @@ impl<'a> Integrator<'a> {
         sampler.set_dimension(self.layout.dimension(level, purpose));
         sampler.get_1d() < q
     }
+}
+
+/// The interiors of the objects whose solid holds the camera (in no particular order:
+/// containers nested around the camera are rare).
+fn camera_interiors(scene: &PreparedScene) -> InteriorStack {
+    scene
+        .world
+        .containing(scene.camera.location)
+        .fold(InteriorStack::OUTSIDE, |stack, material| {
+            let m = &scene.materials[material as usize];
+            stack.entered(m.interior_id, m.interior.ior, m.hollow)
+        })
 }
 
 /// The directions and weights of the reflected and transmitted branches at a hit.
