@@ -8,7 +8,9 @@ pub mod noise;
 pub mod normal;
 pub mod pattern;
 pub mod pigment;
+pub mod sky;
 pub mod texture;
 
 pub use pigment::evaluate_pigment;
+pub use sky::sky_colour;
 pub use texture::{Layer, Layers, may_transmit, perturbed_normal, texture_layers};

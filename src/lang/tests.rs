@@ -235,3 +235,47 @@ fn image_map_keeps_its_warps() {
     let c = evaluate_pigment(&plain, DVec3::new(3.0, 0.5, 0.0));
     assert_eq!(c, Colour::rgb(0.0, 0.0, 1.0));
 }
+
+/// A 3.7 scene sees an image's linear colour whatever its assumed_gamma; an older
+/// `#version` takes the file's values as working colours (POV-Ray 3.7.0.10, grey 128:
+/// 0.2158 in 3.7 scenes; 0.5020 (`assumed_gamma 1`) and 0.2195 = 0.502^2.2
+/// (`assumed_gamma 2.2`) written by 3.6 scenes, which is drums2/drums.pov's backdrop).
+#[test]
+fn image_values_follow_the_version_and_gamma() {
+    use crate::appearance::pigment::evaluate_pigment;
+    use glam::DVec3;
+    let dir = crate::study::TempDir::new("image-gamma").unwrap();
+    image::RgbImage::from_pixel(1, 1, image::Rgb([128, 128, 128]))
+        .save(dir.path().join("grey.png"))
+        .unwrap();
+    let scene_path = dir.path().join("scene.pov").display().to_string();
+    let grey = |header: &str| {
+        let source =
+            format!("{header}\nplane {{ z, 0 pigment {{ image_map {{ png \"grey.png\" }} }} }}");
+        let loaded = load_inner(
+            &scene_path,
+            &source,
+            &LoadOptions::default(),
+            &FileSystem,
+            false,
+        )
+        .unwrap();
+        let pigment = &loaded.scene.objects[0].texture.as_ref().unwrap().pigment;
+        evaluate_pigment(pigment, DVec3::new(0.5, 0.5, 0.0)).rgb.x
+    };
+    let linear = ((128.0 / 255.0 + 0.055) / 1.055f64).powf(2.4);
+    let close = |a: f64, b: f64| assert!((a - b).abs() < 1e-6, "{a} against {b}");
+    close(
+        grey("#version 3.7; global_settings { assumed_gamma 1 }"),
+        linear,
+    );
+    close(
+        grey("#version 3.7; global_settings { assumed_gamma 2.2 }"),
+        linear.powf(1.0 / 2.2),
+    );
+    close(
+        grey("#version 3.6; global_settings { assumed_gamma 2.2 }"),
+        128.0 / 255.0,
+    );
+    close(grey("#version 3.6;"), 128.0 / 255.0);
+}

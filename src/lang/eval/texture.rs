@@ -1058,7 +1058,12 @@ impl Evaluator<'_> {
             let Some(path) = self.resolve_include(&name) else {
                 return Err(self.err(span, format!("cannot find the image \"{name}\"")));
             };
-            let image = load_png(&path).map_err(|e| self.err(span, e))?;
+            let working = if self.scene.legacy() {
+                ImageGamma::Raw
+            } else {
+                ImageGamma::Working(self.scene.settings.assumed_gamma.unwrap_or(1.0))
+            };
+            let image = load_png(&path, working).map_err(|e| self.err(span, e))?;
             let mut im = ImageMap {
                 image: std::sync::Arc::new(image),
                 map_type: MapType::Planar,
@@ -1126,20 +1131,45 @@ impl Evaluator<'_> {
     }
 }
 
-/// Reads a PNG into linear colours: 8- and 16-bit files without a gAMA chunk are sRGB, as
-/// POV-Ray 3.7 assumes (measured: grey 128 renders as 0.2158); alpha becomes transmit.
-fn load_png(path: &std::path::Path) -> Result<ImageData, String> {
+/// What a file's values mean in the scene's working colour space. POV-Ray 3.7 decodes an
+/// image (PNG without gAMA: sRGB) and re-encodes it with `assumed_gamma`, so a 3.7 scene
+/// sees the same linear colour whatever its gamma; older `#version`s take the file's values
+/// as working colours unchanged (measured: grey 128 gives 0.2158 in 3.7 scenes, 0.5020 in a
+/// 3.6 scene with `assumed_gamma 1`, 0.2195 = 0.502^2.2 with `assumed_gamma 2.2`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum ImageGamma {
+    Raw,
+    /// The working gamma: 1 is linear.
+    Working(f64),
+}
+
+impl ImageGamma {
+    fn convert(self, c: f32) -> f64 {
+        let c = c as f64;
+        match self {
+            ImageGamma::Raw => c,
+            ImageGamma::Working(g) => {
+                let linear = if c <= 0.04045 {
+                    c / 12.92
+                } else {
+                    ((c + 0.055) / 1.055).powf(2.4)
+                };
+                if (g - 1.0).abs() > 1e-9 && g > 0.0 {
+                    linear.powf(1.0 / g)
+                } else {
+                    linear
+                }
+            }
+        }
+    }
+}
+
+/// Reads a PNG into working colours (see ImageGamma); alpha becomes transmit.
+fn load_png(path: &std::path::Path, working: ImageGamma) -> Result<ImageData, String> {
     let img = image::open(path).map_err(|e| format!("cannot read \"{}\": {e}", path.display()))?;
     let rgba = img.to_rgba32f();
     let (w, h) = (rgba.width() as usize, rgba.height() as usize);
-    let decode = |c: f32| {
-        let c = c as f64;
-        if c <= 0.04045 {
-            c / 12.92
-        } else {
-            ((c + 0.055) / 1.055).powf(2.4)
-        }
-    };
+    let decode = |c: f32| working.convert(c);
     let pixels = rgba
         .pixels()
         .map(|p| Colour {

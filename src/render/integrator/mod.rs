@@ -22,7 +22,7 @@ pub use optics::{fresnel, refract};
 use glam::DVec3;
 
 use crate::appearance::finish::{metallic_tint, reflectivity};
-use crate::appearance::{evaluate_pigment, perturbed_normal, texture_layers};
+use crate::appearance::{perturbed_normal, sky_colour, texture_layers};
 use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
 use crate::scene::{Colour, Finish};
 
@@ -456,14 +456,7 @@ impl<'a> Integrator<'a> {
             return scene.background.rgb;
         };
         let d = direction.normalize_or(DVec3::Z);
-        let mut colour = scene.background.rgb;
-        for pigment in &sky.pigments {
-            let c = evaluate_pigment(pigment, d);
-            let att = c.opacity(scene.legacy);
-            colour =
-                c.rgb * att * sky.emission + colour * (c.rgb * c.filter + DVec3::splat(c.transmit));
-        }
-        colour
+        sky_colour(sky, d, scene.background.rgb, scene.legacy)
     }
 
     /// Roulette's survival probability for a branch of this weight (1 when roulette is off,
