@@ -24,7 +24,10 @@ impl From<Fog> for Draft {
     /// A draft that starts from a fog (a declared one, or the defaults).
     fn from(mut fog: Fog) -> Draft {
         // Back to the fog's own up: the end of the block turns it by all the transforms.
-        fog.up = fog.transform.inverse_vector(fog.up).normalize_or(glam::DVec3::Y);
+        fog.up = fog
+            .transform
+            .inverse_vector(fog.up)
+            .normalize_or(glam::DVec3::Y);
         let (ground, offset, alt) = match fog.kind {
             FogKind::Constant => (false, 0.0, 0.0),
             FogKind::Ground { offset, alt } => (true, offset, alt),
