@@ -207,3 +207,97 @@ plane {{ z, -1 pigment {{ rgb {le} }} finish {{ F }} }}
         "mean {mean} vs {expected} (se {se})"
     );
 }
+
+/// The floor's brightness under fading glass, seen straight down through a small
+/// orthographic window where the shadow is uniform.
+fn shadowed_floor(objects: &str, light: &str, centre: &str) -> [f64; 3] {
+    let source = format!(
+        "#version 3.7;
+global_settings {{ assumed_gamma 1.0 }}
+camera {{ orthographic location {centre} + 10*y direction -y right 0.1*x up 0.1*z }}
+light_source {{ {light} }}
+plane {{ y, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}
+#declare Glass = material {{
+  texture {{ pigment {{ rgbf 1 }} finish {{ ambient 0 diffuse 0 }} }}
+  interior {{ fade_distance 1 fade_power 1001 fade_color rgb <0.3, 0.5, 0.8> }}
+}}
+{objects}
+"
+    );
+    let options = LoadOptions {
+        image_width: 4,
+        image_height: 4,
+        ..LoadOptions::default()
+    };
+    let scene = load_scene_source("shadow.pov", &source, &options)
+        .expect("loads")
+        .scene;
+    let render = RenderOptions {
+        width: 4,
+        height: 4,
+        samples_per_pixel: 4,
+        ..RenderOptions::default()
+    };
+    let (image, _) = penumbra::render_scene(&scene, &render, &()).expect("renders");
+    let n = image.pixels.len() as f64;
+    let mut mean = [0.0; 3];
+    for p in &image.pixels {
+        for c in 0..3 {
+            mean[c] += p[c] as f64 / n;
+        }
+    }
+    mean
+}
+
+fn assert_faded(got: [f64; 3], light: f64, distance: f64, tolerance: f64) {
+    for (c, absorb) in [0.7, 0.5, 0.2].into_iter().enumerate() {
+        let expected = light * (-absorb * distance).exp();
+        assert!(
+            (got[c] - expected).abs() < tolerance,
+            "channel {c}: {} vs {expected} (fade over {distance})",
+            got[c]
+        );
+    }
+}
+
+/// POV-Ray's shadow rays enter an interior at one crossing of its object and leave it at
+/// the next, fading over the stretch since the previous crossing of anything (measured
+/// with POV-Ray 3.7 on these scenes: 0.262 0.348 0.532 under the union, 0.3499 0.4719
+/// 0.7405 under the nested spheres, which are these formulas to 1e-3).
+#[test]
+fn shadow_rays_fade_between_crossings_as_povray() {
+    // Two overlapping spheres of one union, the light at 45 degrees: wherever the shadow
+    // ray crosses both, it fades from entering one to meeting the other and from leaving
+    // the first to leaving the second, sqrt(2) in all, for spheres one unit apart.
+    let union = "union { sphere { <-0.5, 2, 0>, 1 } sphere { <0.5, 2, 0>, 1 } material { Glass } }";
+    let got = shadowed_floor(
+        union,
+        "<1000, 1000, 0> color rgb 1 parallel point_at <0, 0, 0>",
+        "<-2, 0, 0>",
+    );
+    assert_faded(got, 0.5f64.sqrt(), 2f64.sqrt(), 1e-4);
+    // A merge has one surface: the ray meets the first sphere's front and the second's
+    // back only, and fades over the whole stretch between.
+    let merge = union.replace("union", "merge");
+    let got = shadowed_floor(
+        &merge,
+        "<1000, 1000, 0> color rgb 1 parallel point_at <0, 0, 0>",
+        "<-2, 0, 0>",
+    );
+    let d = 2f64.sqrt() / 2.0;
+    let (a, b) = ((-0.5f64, 2.0f64), (0.5f64, 2.0f64));
+    let along = |c: (f64, f64)| (c.0 + 2.0) * d + c.1 * d;
+    let off = |c: (f64, f64)| ((c.0 + 2.0) * d - c.1 * d).abs();
+    let enter = along(a) - (1.0 - off(a).powi(2)).sqrt();
+    let leave = along(b) + (1.0 - off(b).powi(2)).sqrt();
+    // (The chord changes a little over the window: 1e-3; pairing the crossings by
+    // primitive gave 0.04.)
+    assert_faded(got, 0.5f64.sqrt(), leave - enter, 1e-3);
+    // A clear sphere inside a fading one, the light straight above: the shadow's centre
+    // fades only over the 1.5 units above the clear sphere.
+    // (Both out of the camera's sight, which looks down through them.)
+    let nested = "sphere { <0, 2, 0>, 1.5 material { Glass } no_image }
+sphere { <0, 1.5, 0>, 0.5 pigment { rgbf 1 } finish { ambient 0 diffuse 0 } no_image }";
+    let got = shadowed_floor(nested, "<0, 1000, 0> color rgb 1", "<0, 0, 0>");
+    assert_faded(got, 1.0, 1.5, 1e-3);
+}

@@ -38,6 +38,11 @@ impl InteriorStack {
         self.ids[..self.len].contains(&id)
     }
 
+    /// The interiors, outermost first.
+    pub(super) fn ids(&self) -> &[u32] {
+        &self.ids[..self.len]
+    }
+
     pub(super) fn entered(&self, id: u32, ior: f64, hollow: bool) -> InteriorStack {
         let mut m = *self;
         let slot = m.len.min(DEPTH - 1);

@@ -515,11 +515,19 @@ fn branches(s: &Shading, top: &Top) -> Branches {
     } else {
         refract(d, n, eta)
     };
+    let total_internal = refracted.is_none();
     let transmit = transmitted_weight(
         top.through,
         s.fade_through,
         reflect,
-        refracted.is_none(),
+        total_internal,
+        top.finish.conserve_energy,
+    );
+    let reflect = internally_reflected(
+        reflect,
+        top.through,
+        s.fade_through,
+        total_internal,
         top.finish.conserve_energy,
     );
     Branches {
@@ -592,9 +600,49 @@ fn transmitted_weight(
     }
 }
 
+/// The weight of the reflected branch. A surface left from inside reflects unfaded, but
+/// under total internal reflection POV-Ray fades the finish's reflection too, with the
+/// rest, by the stretch just travelled, unless conserve_energy left nothing to transmit
+/// (fresnel's reflectivity 1), when only the reflection, unfaded, remains (measured on a
+/// 45-degree glass prism seen through its long face, fade over 2 units: reflection 0.2
+/// gives 0.3413 without and 0.2905 with conserve_energy, fresnel 0.1765 without and 0.6213
+/// with; each the sum over its paths to 1e-4 under this rule).
+fn internally_reflected(
+    reflect: DVec3,
+    through: DVec3,
+    fade: DVec3,
+    total_internal: bool,
+    conserve_energy: bool,
+) -> DVec3 {
+    let would_transmit = if conserve_energy {
+        through * (DVec3::ONE - reflect).max(DVec3::ZERO)
+    } else {
+        through
+    };
+    if total_internal && would_transmit != DVec3::ZERO {
+        reflect * fade
+    } else {
+        reflect
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn total_internal_reflection_fades_unless_nothing_would_transmit() {
+        let (through, fade) = (DVec3::ONE, DVec3::splat(0.5));
+        let r = DVec3::splat(0.2);
+        // Leaving without total internal reflection: the reflection is not faded.
+        assert_eq!(internally_reflected(r, through, fade, false, true), r);
+        assert_eq!(internally_reflected(r, through, fade, true, false), r * 0.5);
+        assert_eq!(internally_reflected(r, through, fade, true, true), r * 0.5);
+        // Fresnel's reflectivity 1: faded without conserve_energy, not with it.
+        let all = DVec3::ONE;
+        assert_eq!(internally_reflected(all, through, fade, true, false), fade);
+        assert_eq!(internally_reflected(all, through, fade, true, true), all);
+    }
 
     #[test]
     fn transmission_keeps_what_is_not_reflected() {
