@@ -109,3 +109,20 @@ fog {{ distance 10 color rgb 0 }}
         seen("hollow")
     );
 }
+
+/// A `media_attenuation` light dims through fog only outside solid objects (povray: a disc
+/// inside a clear solid sphere of radius 5, lit from 20 away through fog of distance 10 and
+/// seen from 10 away, reads 0.13538 = exp(-0.5) exp(-1.5)).
+#[test]
+fn lights_dim_through_fog_outside_solid_objects() {
+    let source = "#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 0, -10> look_at 0 angle 0.5 }
+sphere { 0, 5 pigment { rgbt 1 } finish { ambient 0 diffuse 0 } interior { ior 1 } }
+disc { 0, -z, 2 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+light_source { <0, 0, -20> rgb 1 media_attenuation on }
+fog { distance 10 color rgb 0 }
+";
+    let seen = f64::from(render(source, 1).get(0, 0)[0]);
+    assert!((seen - (-2.0f64).exp()).abs() < 3e-4, "{seen}");
+}

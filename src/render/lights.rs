@@ -16,6 +16,7 @@ pub struct PreparedLight {
     pub fade_power: f64,
     pub area: Option<PreparedArea>,
     pub area_illumination: bool,
+    pub media_attenuation: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -92,6 +93,7 @@ impl PreparedLight {
             fade_power: light.fade_power,
             area,
             area_illumination: light.area_illumination && light.area.is_some(),
+            media_attenuation: light.media_attenuation,
         }
     }
 

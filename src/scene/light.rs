@@ -54,6 +54,8 @@ pub struct Light {
     /// `looks_like { object }`: already placed at the light; it is seen but does not
     /// shadow its own light.
     pub looks_like: Option<Box<super::Object>>,
+    /// `media_attenuation on`: the light dims through fog on its way (and through media).
+    pub media_attenuation: bool,
 }
 
 impl Light {
@@ -68,6 +70,7 @@ impl Light {
             fade_distance: 0.0,
             fade_power: 0.0,
             looks_like: None,
+            media_attenuation: false,
         }
     }
 }

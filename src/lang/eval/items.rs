@@ -499,7 +499,11 @@ impl Evaluator<'_> {
                 self.next()?;
                 light.area_illumination = self.optional_bool()?;
             }
-            "media_interaction" | "media_attenuation" => {
+            "media_attenuation" => {
+                self.next()?;
+                light.media_attenuation = self.optional_bool()?;
+            }
+            "media_interaction" => {
                 // Only matters with media, which penumbra does not have.
                 self.next()?;
                 self.optional_bool()?;

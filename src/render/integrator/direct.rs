@@ -16,6 +16,7 @@ use crate::scene::{Colour, Finish};
 use super::interiors::InteriorStack;
 use super::optics::fade;
 use super::{Integrator, RayCounts, Shading};
+use crate::render::fog::{Segment, light_through_fog};
 
 /// Spreads several light samples: point k of n is shifted by (k/n, k * golden ratio mod 1),
 /// a well-spread 2D set for any n.
@@ -203,7 +204,8 @@ impl Integrator<'_> {
         let area = q.light.area.as_ref();
         let Some(area) = area.filter(|_| self.quality >= super::QUALITY_AREA_LIGHTS) else {
             counts.shadow += 1;
-            return self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9), &q.inside);
+            return self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9), &q.inside)
+                * self.through_fog(q, l, distance);
         };
         let dim = self
             .layout
@@ -216,7 +218,7 @@ impl Integrator<'_> {
                 &Ray::new(q.origin, to / dist),
                 dist * (1.0 - 1e-9),
                 &q.inside,
-            )
+            ) * self.through_fog(q, to / dist, dist)
         };
         let pov = self.area_lights == AreaLightMode::Pov;
         if area.adaptive.is_some() && pov {
@@ -238,6 +240,52 @@ impl Integrator<'_> {
         sampler.set_dimension(dim);
         let s = sampler.get_2d();
         self.area_samples(q, area, s, n, &mut shadow_to)
+    }
+
+    /// What the fogs leave of a `media_attenuation` light over a shadow ray (`l` unit): fog
+    /// acts on the stretches outside solid objects only (measured: a disc inside a clear
+    /// solid sphere of radius 5, lit from 20 away, receives exp(-15 / distance)).
+    fn through_fog(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
+        let fogs = &self.scene.fogs;
+        if !q.light.media_attenuation || fogs.is_empty() {
+            return DVec3::ONE;
+        }
+        let ray = Ray::new(q.origin, l);
+        let mut hits = [(0.0, 0u32); MAX_CROSSINGS];
+        let mut n = 0;
+        self.scene.world.shadow_hits(&ray, distance, |hit| {
+            hits[n] = (hit.t, self.scene.world.primitive_material(hit.primitive));
+            n += 1;
+            n < MAX_CROSSINGS
+        });
+        let hits = &mut hits[..n];
+        hits.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut interiors = q.inside;
+        let mut start = 0.0;
+        let mut factor = DVec3::ONE;
+        let ends = hits
+            .iter()
+            .map(|&(t, m)| (t, Some(m)))
+            .chain([(distance, None)]);
+        for (t, material) in ends {
+            if interiors.in_atmosphere() && t > start {
+                let segment = Segment {
+                    origin: ray.at(start),
+                    direction: l,
+                    length: t - start,
+                };
+                factor *= light_through_fog(fogs, &segment);
+            }
+            if let Some(m) = material.map(|m| &self.scene.materials[m as usize]) {
+                interiors = if interiors.contains(m.interior_id) {
+                    interiors.left(m.interior_id)
+                } else {
+                    interiors.entered(m.interior_id, m.interior.ior, m.hollow)
+                };
+            }
+            start = t;
+        }
+        factor
     }
 
     /// `n` shadow samples of an area light: the stratified sample shifted by a well-spread
