@@ -10,6 +10,9 @@ markdown table row per scene.
 
 Usage: scripts/phase_ensemble.py SCENE.pov [SCENE.pov ...]   (needs povray, numpy, pillow,
        and target/release/penumbra)
+       scripts/phase_ensemble.py --shift 'TEXT' SCENE.pov: shift the noise by inserting
+       `translate <dx, dy, dz>` after TEXT (the start of the noise pattern, so that the
+       shift is in the noise's own units, before the pattern's scales) instead.
 """
 import os
 import re
@@ -28,8 +31,12 @@ PENUMBRA = os.path.join(ROOT, "target", "release", "penumbra")
 SKY = re.compile(r"sky_sphere\s*\{\s*([A-Za-z_][A-Za-z_0-9]*)\s*\}")
 
 
-def shifted(text, k):
+def shifted(text, k, after=None):
     offset = f"<{7 * k}, {3 * k}, {5 * k}>"
+    if after is not None:
+        if after not in text:
+            sys.exit(f"`{after}` is not in the scene")
+        return text.replace(after, f"{after} translate {offset}", 1)
     out, n = SKY.subn(lambda m: f"sky_sphere {{ {m.group(1)} translate {offset} }}", text)
     if n == 0:
         sys.exit("no `sky_sphere { NAME }` to shift")
@@ -40,13 +47,13 @@ def mean_rgb(png):
     return np.asarray(Image.open(png).convert("RGB"), float).mean(axis=(0, 1)) / 255
 
 
-def render_pair(scene, k, tmp):
+def render_pair(scene, k, tmp, after):
     folder = os.path.dirname(os.path.abspath(scene))
     pov = os.path.join(tmp, f"phase{k}.pov")
     with open(scene, errors="replace") as f:
         text = f.read()
     with open(pov, "w") as f:
-        f.write(shifted(text, k))
+        f.write(shifted(text, k, after))
     a, b = os.path.join(tmp, f"pov{k}.png"), os.path.join(tmp, f"pen{k}.png")
     subprocess.run(["povray", "-D", "-A", "+W160", "+H120", f"+I{pov}", f"+O{a}",
                     f"+L{folder}", f"+L{INCLUDE}"], check=True,
@@ -59,10 +66,14 @@ def render_pair(scene, k, tmp):
 def main():
     print("| scene | channel | POV-Ray mean (sd) over phases | penumbra mean (sd) | t |")
     print("| --- | --- | --- | --- | ---: |")
-    for scene in sys.argv[1:]:
+    args = sys.argv[1:]
+    after = None
+    if args[:1] == ["--shift"]:
+        after, args = args[1], args[2:]
+    for scene in args:
         tmp = tempfile.mkdtemp()
         try:
-            pairs = [render_pair(scene, k, tmp) for k in range(N)]
+            pairs = [render_pair(scene, k, tmp, after) for k in range(N)]
         finally:
             shutil.rmtree(tmp)
         pov = np.array([p for p, _ in pairs])
