@@ -193,10 +193,20 @@ pub fn dnoise(p: DVec3) -> DVec3 {
 /// rising frequencies (times lambda) and falling weights (times omega). The [-1, 1] range
 /// is what makes marble's spectrum match povray's (with [0, 1] it has a third of the power).
 pub fn turbulence(p: DVec3, t: &Turbulence) -> f64 {
-    let mut sum = 2.0 * noise(p) - 1.0;
+    fractal_sum(p, t, |q| 2.0 * noise(q) - 1.0)
+}
+
+/// Octaves of `f` at rising frequencies (times lambda) and falling weights (times omega):
+/// the sum every kind of turbulence shares.
+#[inline]
+fn fractal_sum<T>(p: DVec3, t: &Turbulence, f: impl Fn(DVec3) -> T) -> T
+where
+    T: Copy + std::ops::Add<Output = T> + std::ops::Mul<f64, Output = T>,
+{
+    let mut sum = f(p);
     let (mut l, mut o) = (t.lambda, t.omega);
     for _ in 1..t.octaves.max(1) {
-        sum += o * (2.0 * noise(p * l) - 1.0);
+        sum = sum + f(p * l) * o;
         l *= t.lambda;
         o *= t.omega;
     }
@@ -213,27 +223,12 @@ const FOG_NOISE: (f64, f64) = (2.024, -0.502);
 
 /// The scalar fractal sum a fog's turbulence reads (see render::fog).
 pub fn fog_turbulence(p: DVec3, t: &Turbulence) -> f64 {
-    let x = |p: DVec3| FOG_NOISE.0 * noise(p) + FOG_NOISE.1;
-    let mut sum = x(p);
-    let (mut l, mut o) = (t.lambda, t.omega);
-    for _ in 1..t.octaves.max(1) {
-        sum += o * x(p * l);
-        l *= t.lambda;
-        o *= t.omega;
-    }
-    sum
+    fractal_sum(p, t, |q| FOG_NOISE.0 * noise(q) + FOG_NOISE.1)
 }
 
 /// The vector fractal sum that warps points (`turbulence`, `warp { turbulence }`).
 pub fn dturbulence(p: DVec3, t: &Turbulence) -> DVec3 {
-    let mut sum = dnoise(p);
-    let (mut l, mut o) = (t.lambda, t.omega);
-    for _ in 1..t.octaves.max(1) {
-        sum += o * dnoise(p * l);
-        l *= t.lambda;
-        o *= t.omega;
-    }
-    sum
+    fractal_sum(p, t, dnoise)
 }
 
 #[cfg(test)]

@@ -204,8 +204,7 @@ impl Integrator<'_> {
         let area = q.light.area.as_ref();
         let Some(area) = area.filter(|_| self.quality >= super::QUALITY_AREA_LIGHTS) else {
             counts.shadow += 1;
-            return self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9), &q.inside)
-                * self.through_fog(q, l, distance);
+            return self.light_through(q, l, distance);
         };
         let dim = self
             .layout
@@ -214,11 +213,7 @@ impl Integrator<'_> {
             let to = target - q.origin;
             let dist = to.length();
             counts.shadow += 1;
-            self.shadow_filter(
-                &Ray::new(q.origin, to / dist),
-                dist * (1.0 - 1e-9),
-                &q.inside,
-            ) * self.through_fog(q, to / dist, dist)
+            self.light_through(q, to / dist, dist)
         };
         let pov = self.area_lights == AreaLightMode::Pov;
         if area.adaptive.is_some() && pov {
@@ -240,6 +235,16 @@ impl Integrator<'_> {
         sampler.set_dimension(dim);
         let s = sampler.get_2d();
         self.area_samples(q, area, s, n, &mut shadow_to)
+    }
+
+    /// What reaches the shading point along one shadow ray (`l` unit, `distance` to the
+    /// light's point): the objects' filter, then the fog where the light is attenuated.
+    fn light_through(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
+        let filter = self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9), &q.inside);
+        if filter == DVec3::ZERO {
+            return filter;
+        }
+        filter * self.through_fog(q, l, distance)
     }
 
     /// What the fogs leave of a `media_attenuation` light over a shadow ray (`l` unit): fog
