@@ -17,6 +17,9 @@ pub struct PreparedLight {
     pub area: Option<PreparedArea>,
     pub area_illumination: bool,
     pub media_attenuation: bool,
+    /// Whether scattering media see the light: not with `media_interaction off`, and
+    /// never from a shadowless light (measured: a shadowless light lights no media).
+    pub lights_media: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -94,6 +97,7 @@ impl PreparedLight {
             area,
             area_illumination: light.area_illumination && light.area.is_some(),
             media_attenuation: light.media_attenuation,
+            lights_media: light.media_interaction && !light.shadowless,
         }
     }
 

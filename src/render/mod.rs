@@ -6,6 +6,7 @@ pub mod film;
 pub mod fog;
 pub mod integrator;
 pub mod lights;
+pub mod media;
 pub mod prepared;
 pub mod sampler;
 

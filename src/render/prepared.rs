@@ -14,6 +14,7 @@ use crate::scene::{
 
 use super::dimensions::{DimensionLayout, OptionalDecisions};
 use super::lights::PreparedLight;
+use super::media::MediaTable;
 
 /// How the traced values of a scene computed in gamma space become linear light.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,6 +57,8 @@ pub struct PreparedScene {
     pub sky_sphere: Option<SkySphere>,
     /// The fogs that apply (distance > 0).
     pub fogs: Vec<crate::scene::Fog>,
+    /// The atmospheric media and those of every interior.
+    pub media: MediaTable,
     pub settings: GlobalSettings,
     pub legacy: bool,
     /// Scenes with `assumed_gamma g` (g != 1), and pre-3.7 scenes without one, are computed
@@ -71,7 +74,11 @@ impl PreparedScene {
     /// Which sampler dimension each decision reads: it depends on the lights (and the
     /// optional decisions the scene makes), never on the objects.
     pub fn dimension_layout(&self) -> DimensionLayout {
-        DimensionLayout::new(self.lights.len(), OptionalDecisions::default())
+        let optional = OptionalDecisions {
+            media: !self.media.is_empty(),
+            ..OptionalDecisions::default()
+        };
+        DimensionLayout::new(self.lights.len(), optional)
     }
 
     pub fn new(scene: &Scene) -> PreparedScene {
@@ -79,6 +86,7 @@ impl PreparedScene {
             world: WorldBuilder::default(),
             materials: Vec::new(),
             interior_ids: std::collections::HashMap::new(),
+            media: MediaTable::new(&scene.media),
         };
         let default_texture = Texture::default();
         let default_interior = Interior::default();
@@ -96,6 +104,7 @@ impl PreparedScene {
             any_transmitting: builder.materials.iter().any(|m| m.transmits),
             world: builder.world.build(),
             materials: builder.materials,
+            media: builder.media,
             lights: scene.lights.iter().map(PreparedLight::new).collect(),
             camera: scene.camera.clone(),
             background: scene.background,
@@ -122,6 +131,7 @@ struct Builder {
     materials: Vec<Material>,
     /// Interior ids by owner (see Looks::interior_owner).
     interior_ids: std::collections::HashMap<usize, u32>,
+    media: MediaTable,
 }
 
 fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
@@ -307,11 +317,16 @@ impl Builder {
                 *self.interior_ids.entry(key).or_insert(next)
             }
         };
+        self.media.add_interior(interior_id, &interior.media);
         self.materials.push(Material {
             texture: looks.texture.clone(),
             double_illuminate: looks.flags.double_illuminate,
             transmits: may_transmit(looks.texture),
-            interior: *interior,
+            // The media go to the scene's media table, once per interior.
+            interior: Interior {
+                media: Vec::new(),
+                ..interior.clone()
+            },
             interior_id,
             hollow: looks.flags.hollow,
         });

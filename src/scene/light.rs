@@ -56,6 +56,8 @@ pub struct Light {
     pub looks_like: Option<Box<super::Object>>,
     /// `media_attenuation on`: the light dims through fog on its way (and through media).
     pub media_attenuation: bool,
+    /// `media_interaction off`: scattering media do not see the light.
+    pub media_interaction: bool,
 }
 
 impl Light {
@@ -71,6 +73,7 @@ impl Light {
             fade_power: 0.0,
             looks_like: None,
             media_attenuation: false,
+            media_interaction: true,
         }
     }
 }

@@ -6,12 +6,14 @@
 mod camera;
 mod fog;
 mod light;
+mod media;
 mod object;
 mod texture;
 
 pub use camera::{Camera, CameraSpec};
 pub use fog::{Fog, FogKind, FogTurbulence};
 pub use light::{AreaLight, Light, LightKind};
+pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
 pub use texture::{
     Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
@@ -101,6 +103,8 @@ pub struct Scene {
     pub sky_sphere: Option<SkySphere>,
     /// Every `fog { }`, in order (their effects combine: see render::fog).
     pub fogs: Vec<Fog>,
+    /// Every top-level `media { }`: atmospheric media, filling space outside solid objects.
+    pub media: Vec<Media>,
     pub settings: GlobalSettings,
     /// The `#version` in force at the end of parsing; below 3.7 some formulas differ.
     pub version: f64,
@@ -115,6 +119,7 @@ impl Default for Scene {
             background: Colour::BLACK,
             sky_sphere: None,
             fogs: Vec::new(),
+            media: Vec::new(),
             settings: GlobalSettings::default(),
             version: 3.7,
         }

@@ -160,6 +160,9 @@ impl Object {
         if let Some(texture) = &mut self.texture {
             Arc::make_mut(texture).transform_by(t);
         }
+        if let Some(interior) = &mut self.interior {
+            interior.transform_by(t);
+        }
         if let Some(children) = self.shape.children_mut() {
             for child in children {
                 child.transform_by(t);

@@ -436,9 +436,9 @@ impl Default for Finish {
     }
 }
 
-/// What is inside a solid object: the index of refraction and the fade of light along
-/// its path through it.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// What is inside a solid object: the index of refraction, the fade of light along
+/// its path through it, and the media that fill it.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Interior {
     pub ior: f64,
     /// Distance at which light has faded to half (POV-Ray default 0: no fade).
@@ -446,6 +446,8 @@ pub struct Interior {
     /// 0 means no fade; >= 1000 means exponential fade.
     pub fade_power: f64,
     pub fade_colour: DVec3,
+    /// Several media in one interior add (measured: emission 0.5 and 0.25 emit 0.75).
+    pub media: Vec<super::Media>,
 }
 
 impl Default for Interior {
@@ -455,6 +457,16 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_colour: DVec3::ZERO,
+            media: Vec::new(),
+        }
+    }
+}
+
+impl Interior {
+    /// Media densities live in the object's space: they move with it.
+    pub fn transform_by(&mut self, t: &Transform) {
+        for m in &mut self.media {
+            m.transform_by(t);
         }
     }
 }

@@ -12,7 +12,7 @@ use crate::scene::{AreaLight, CameraSpec, Light, LightKind};
 type R<T> = Result<T, Diagnostic>;
 
 /// Features POV-Ray has at the top level that penumbra does not model yet.
-const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "media", "photons", "radiosity"];
+const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "photons", "radiosity"];
 
 impl Evaluator<'_> {
     pub(super) fn item(&mut self) -> R<()> {
@@ -39,6 +39,10 @@ impl Evaluator<'_> {
             "fog" => {
                 let fog = self.fog()?;
                 self.scene.fogs.push(fog);
+            }
+            "media" => {
+                let media = self.media()?;
+                self.scene.media.push(media);
             }
             // POV-Ray still reads the old form of `#default` without the `#`.
             "default" => {
@@ -129,6 +133,12 @@ impl Evaluator<'_> {
             "camera" => Value::Camera(Box::new(self.camera_block()?)),
             "sky_sphere" => Value::SkySphere(Box::new(self.sky_sphere()?)),
             "fog" => Value::Fog(Box::new(self.fog()?)),
+            "media" => Value::Media(Box::new(self.media()?)),
+            "density" => {
+                self.next()?;
+                let white = crate::scene::Pigment::solid(crate::scene::Colour::rgb(1.0, 1.0, 1.0));
+                Value::Pigment(Box::new(self.density_body(white)?))
+            }
             "pigment" => {
                 self.next()?;
                 Value::Pigment(Box::new(
@@ -504,9 +514,8 @@ impl Evaluator<'_> {
                 light.media_attenuation = self.optional_bool()?;
             }
             "media_interaction" => {
-                // Only matters with media, which penumbra does not have.
                 self.next()?;
-                self.optional_bool()?;
+                light.media_interaction = self.optional_bool()?;
             }
             "fade_distance" => {
                 self.next()?;
@@ -751,7 +760,7 @@ const TOP_LEVEL_ONLY: &[&str] = &["camera", "global_settings", "background", "li
 /// value's expression can continue with.
 pub fn starts_statement(word: &str) -> bool {
     TOP_LEVEL_ONLY.contains(&word)
-        || matches!(word, "sky_sphere" | "fog" | "rainbow")
+        || matches!(word, "sky_sphere" | "fog" | "rainbow" | "media")
         || super::objects::is_object_keyword(word)
         || super::objects::is_known_unsupported_shape(word)
 }

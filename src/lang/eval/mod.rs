@@ -18,6 +18,7 @@ mod fog;
 mod functions;
 mod items;
 mod keywords;
+mod media;
 mod objects;
 mod stream;
 mod texture;
@@ -67,6 +68,9 @@ pub struct Evaluator<'w> {
     default_texture: crate::scene::Texture,
     /// The default texture, shared, once `#default` made it differ from the built-in one.
     changed_default: Option<std::sync::Arc<crate::scene::Texture>>,
+    /// Inside a `density { }`, where `density` and `density_map` stand for `pigment` and
+    /// `pigment_map`.
+    reading_density: bool,
     /// The texture an object got last: the next object with an equal one shares it.
     last_texture: Option<std::sync::Arc<crate::scene::Texture>>,
     /// `--skip-unsupported`: unsupported features become warnings and are left out.
@@ -104,6 +108,7 @@ impl<'w> Evaluator<'w> {
             in_vector: false,
             default_texture: crate::scene::Texture::default(),
             changed_default: None,
+            reading_density: false,
             last_texture: None,
             skip_unsupported: false,
             debug_output: String::new(),

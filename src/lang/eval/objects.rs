@@ -444,7 +444,7 @@ impl Evaluator<'_> {
             })?,
             "interior" => {
                 self.next()?;
-                let base = object.interior.unwrap_or_default();
+                let base = object.interior.take().unwrap_or_default();
                 object.interior = Some(self.interior_body(base)?);
             }
             "material" => {
@@ -642,7 +642,11 @@ impl Evaluator<'_> {
                     ev.next()?;
                     ev.interior_fade_item(&w, interior)?;
                 }
-                Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
+                Some("media") => {
+                    let media = ev.media()?;
+                    interior.media.push(media);
+                }
+                Some(w @ ("caustics" | "dispersion" | "dispersion_samples")) => {
                     let w = w.to_string();
                     ev.unsupported_or_skip(tok, &w)?;
                 }
@@ -814,7 +818,7 @@ impl Evaluator<'_> {
                 }
                 Some("interior") => {
                     ev.next()?;
-                    let base = object.interior.unwrap_or_default();
+                    let base = object.interior.take().unwrap_or_default();
                     object.interior = Some(ev.interior_body(base)?);
                 }
                 Some(n) if matches!(ev.lookup(n), Some(Value::Material(_) | Value::Array(_))) => {

@@ -249,7 +249,7 @@ impl Evaluator<'_> {
                         .unwrap_or_else(|| Pattern::new(PatternKind::Gradient(DVec3::X)));
                     p.kind = PigmentKind::ColourMap { pattern, map };
                 }
-                Some("pigment_map") => {
+                Some(w) if w == self.pigment_map_word() => {
                     self.next()?;
                     let mut map = self.pigment_map_body()?;
                     let t = p.transform;
@@ -531,6 +531,23 @@ impl Evaluator<'_> {
         Ok(map)
     }
 
+    /// What a pigment block calls its sub-pigments: `density` inside a density.
+    fn pigment_word(&self) -> &'static str {
+        if self.reading_density {
+            "density"
+        } else {
+            "pigment"
+        }
+    }
+
+    fn pigment_map_word(&self) -> &'static str {
+        if self.reading_density {
+            "density_map"
+        } else {
+            "pigment_map"
+        }
+    }
+
     /// `{ [v pigment {...}] ... }` after `pigment_map`.
     fn pigment_map_body(&mut self) -> R<Vec<(f64, Pigment)>> {
         self.read_map_entries(
@@ -541,7 +558,7 @@ impl Evaluator<'_> {
                 let v = ev.float()?;
                 ev.eat(Punct::Comma)?;
                 // Entries are pigment bodies: `[0.5 checker rgb 1, rgb 0]`, `[1 Named]`.
-                let p = if ev.peek()?.is_ident("pigment") {
+                let p = if ev.peek()?.is_ident(ev.pigment_word()) {
                     ev.list_entry()?.unwrap_or_default()
                 } else {
                     ev.pigment_items(Pigment::default(), Punct::RBracket)?
@@ -709,7 +726,7 @@ impl Evaluator<'_> {
     /// One entry of a pattern list: `pigment {...}` or a colour; `None` when neither follows.
     fn list_entry(&mut self) -> R<Option<Pigment>> {
         let tok = self.peek()?;
-        if tok.is_ident("pigment") {
+        if tok.is_ident(self.pigment_word()) {
             self.next()?;
             return Ok(Some(self.pigment_body(Pigment::default())?));
         }

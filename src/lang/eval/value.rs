@@ -97,6 +97,7 @@ pub enum Value {
     Macro(Rc<MacroDef>),
     SkySphere(Box<crate::scene::SkySphere>),
     Fog(Box<crate::scene::Fog>),
+    Media(Box<crate::scene::Media>),
     Array(Rc<std::cell::RefCell<ArrayValue>>),
     /// A declaration that used a feature penumbra lacks. Include files declare many things
     /// a scene never uses, so the error waits until the identifier is used.
@@ -132,6 +133,7 @@ impl Value {
             Value::Macro(_) => "a macro",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Fog(_) => "a fog",
+            Value::Media(_) => "a media",
             Value::Array(_) => "an array",
             Value::Unsupported(_) => "an unsupported value",
         }

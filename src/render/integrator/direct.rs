@@ -75,18 +75,18 @@ pub(super) struct LightAt {
 }
 
 /// A shadow test from one shading point towards one light.
-struct ShadowQuery<'l> {
-    light: &'l PreparedLight,
-    index: u32,
-    level: u32,
+pub(super) struct ShadowQuery<'l> {
+    pub light: &'l PreparedLight,
+    pub index: u32,
+    pub level: u32,
     /// The shading point, to which an area light's grid is oriented.
-    p: DVec3,
+    pub p: DVec3,
     /// Where shadow rays start: off the surface, on the light's side.
-    origin: DVec3,
+    pub origin: DVec3,
     /// The interiors that side is in.
-    inside: InteriorStack,
+    pub inside: InteriorStack,
     /// The unshadowed light colour, which POV-Ray's adaptive rule compares.
-    colour: DVec3,
+    pub colour: DVec3,
 }
 
 impl Integrator<'_> {
@@ -193,7 +193,7 @@ impl Integrator<'_> {
     }
 
     /// The fraction of the light that reaches the shading point.
-    fn visibility(
+    pub(super) fn visibility(
         &self,
         q: &ShadowQuery,
         l: DVec3,
@@ -238,21 +238,24 @@ impl Integrator<'_> {
     }
 
     /// What reaches the shading point along one shadow ray (`l` unit, `distance` to the
-    /// light's point): the objects' filter, then the fog where the light is attenuated.
+    /// light's point): the objects' filter, then the fog and media on the way.
     fn light_through(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
         let filter = self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9), &q.inside);
         if filter == DVec3::ZERO {
             return filter;
         }
-        filter * self.through_fog(q, l, distance)
+        filter * self.through_atmosphere(q, l, distance)
     }
 
-    /// What the fogs leave of a `media_attenuation` light over a shadow ray (`l` unit): fog
-    /// acts on the stretches outside solid objects only (measured: a disc inside a clear
-    /// solid sphere of radius 5, lit from 20 away, receives exp(-15 / distance)).
-    fn through_fog(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
+    /// What fog and media leave of the light over a shadow ray (`l` unit), stretch by
+    /// stretch between the surfaces it crosses. The fogs act on a `media_attenuation`
+    /// light only, on the stretches outside solid objects (measured: a disc inside a clear
+    /// solid sphere of radius 5, lit from 20 away, receives exp(-15 / distance)); media as
+    /// render::integrator::media says.
+    fn through_atmosphere(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
         let fogs = &self.scene.fogs;
-        if !q.light.media_attenuation || fogs.is_empty() {
+        let fog = q.light.media_attenuation && !fogs.is_empty();
+        if !fog && self.scene.media.is_empty() {
             return DVec3::ONE;
         }
         let ray = Ray::new(q.origin, l);
@@ -279,7 +282,13 @@ impl Integrator<'_> {
                     direction: l,
                     length: t - start,
                 };
-                factor *= light_through_fog(fogs, &segment);
+                if fog {
+                    factor *= light_through_fog(fogs, &segment);
+                }
+                factor *= self.media_transmittance(&segment, &interiors, q.light.media_attenuation);
+                if factor == DVec3::ZERO {
+                    break;
+                }
             }
             if let Some(m) = material.map(|m| &self.scene.materials[m as usize]) {
                 interiors = if interiors.contains(m.interior_id) {

@@ -15,6 +15,7 @@
 
 mod direct;
 mod interiors;
+mod media;
 mod optics;
 
 pub use optics::{fresnel, refract};
@@ -220,7 +221,8 @@ impl<'a> Integrator<'a> {
             Some(hit) => self.shade(&self.shading(ray, hit, path), sampler, counts),
             None => self.sky(ray.direction),
         };
-        if self.scene.fogs.is_empty() || !path.interiors.in_atmosphere() {
+        let media = !self.scene.media.is_empty();
+        if (self.scene.fogs.is_empty() && !media) || !path.interiors.in_atmosphere() {
             return seen;
         }
         let scale = ray.direction.length();
@@ -228,6 +230,12 @@ impl<'a> Integrator<'a> {
             origin: ray.origin,
             direction: ray.direction / scale,
             length: hit.map_or(f64::INFINITY, |h| h.t * scale),
+        };
+        let seen = if media {
+            self.media_effect(&segment, &path.interiors, path.level, sampler, counts)
+                .apply(seen)
+        } else {
+            seen
         };
         fog_effect(&self.scene.fogs, &segment).apply(seen)
     }
