@@ -13,7 +13,8 @@
 //!   light's travel and the direction to the viewer, on POV-Ray's scale where isotropic
 //!   scattering is 1 (a thin slab lit from behind: 1.0016 for type 1). The others, fitted
 //!   over five angles and normalised by type 1's 1.0016: type 2 (Mie haze)
-//!   0.5759 (1 + 9 ((1 + c) / 2)^8), type 3 (Mie murky) 0.4928 (1 + 50 ((1 + c) / 2)^32),
+//!   0.5759 (1 + 9 ((1 + c) / 2)^8), type 3 (Mie murky) 0.494 (1 + 50 ((1 + c) / 2)^32)
+//!   (0.4928 lit from behind, 0.4957 from the front: the fit holds to 0.6%),
 //!   type 4 (Rayleigh) 0.7990 (1 + c^2), type 5 the Henyey-Greenstein function
 //!   (1 - g^2) / (1 + g^2 - 2 g c)^1.5, averaging 1 (6.00 and 0.222 forward and back at g
 //!   0.5).
@@ -112,7 +113,7 @@ pub fn phase(phase: Phase, c: f64) -> f64 {
     match phase {
         Phase::Isotropic => 1.0,
         Phase::MieHazy => 0.5759 * (1.0 + 9.0 * ((1.0 + c) / 2.0).powi(8)),
-        Phase::MieMurky => 0.4928 * (1.0 + 50.0 * ((1.0 + c) / 2.0).powi(32)),
+        Phase::MieMurky => 0.4940 * (1.0 + 50.0 * ((1.0 + c) / 2.0).powi(32)),
         Phase::Rayleigh => 0.7990 * (1.0 + c * c),
         Phase::HenyeyGreenstein(g) => (1.0 - g * g) / (1.0 + g * g - 2.0 * g * c).powf(1.5),
     }
@@ -206,20 +207,24 @@ mod tests {
 
     #[test]
     fn phase_functions_match_povray_at_the_measured_angles() {
-        // Thin slab lit from behind (c = 1) and from the viewer's side (c = -1), povray
-        // 3.7, divided by its isotropic 1.0016.
+        // povray 3.7, each divided by type 1's figure in the same set-up: lit from behind
+        // (c = 1) through a slab of scattering 0.1, where the integrand is constant (type 1:
+        // 1.0016), and lit from the viewer's side (c = -1) through a slab of 0.002 (0.9995).
         let cases = [
-            (Phase::MieHazy, 1.0, 5.7665 / 1.0016),
-            (Phase::MieHazy, -1.0, 0.5765 / 1.0016),
-            (Phase::MieMurky, -1.0, 0.4957 / 1.0016),
-            (Phase::Rayleigh, 1.0, 1.598 / 1.0016),
+            (Phase::MieHazy, 1.0, 0.57679 * 10.0 / 1.0016),
+            (Phase::MieMurky, 1.0, 0.49354 * 51.0 / 1.0016),
+            (Phase::Rayleigh, 1.0, 0.80029 * 2.0 / 1.0016),
+            (Phase::MieHazy, -1.0, 0.5761 / 0.9995),
+            (Phase::MieMurky, -1.0, 0.4955 / 0.9995),
+            (Phase::Rayleigh, -1.0, 0.7985 * 2.0 / 0.9995),
             (Phase::HenyeyGreenstein(0.5), 1.0, 6.0),
             (Phase::HenyeyGreenstein(0.5), -1.0, 0.2222),
         ];
         for (p, c, want) in cases {
             let got = phase(p, c);
+            // Type 3's two figures disagree with each other by 0.6%.
             assert!(
-                (got / want - 1.0).abs() < 3e-3,
+                (got / want - 1.0).abs() < 4e-3,
                 "{p:?} at {c}: {got} vs {want}"
             );
         }
