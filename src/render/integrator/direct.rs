@@ -255,7 +255,8 @@ impl Integrator<'_> {
     fn through_atmosphere(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
         let fogs = &self.scene.fogs;
         let fog = q.light.media_attenuation && !fogs.is_empty();
-        if !fog && self.scene.media.is_empty() {
+        let media = !self.scene.media.is_empty() && self.quality >= super::QUALITY_MEDIA;
+        if !fog && !media {
             return DVec3::ONE;
         }
         let ray = Ray::new(q.origin, l);

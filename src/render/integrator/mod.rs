@@ -171,6 +171,8 @@ pub(super) const QUALITY_LIGHTING: u32 = 2;
 pub(super) const QUALITY_SHADOWS: u32 = 4;
 pub(super) const QUALITY_AREA_LIGHTS: u32 = 5;
 pub(super) const QUALITY_RAYS: u32 = 8;
+/// From +Q9 on, POV-Ray computes media (measured: an emitting slab shows at 9, not 8).
+pub(super) const QUALITY_MEDIA: u32 = 9;
 
 impl<'a> Integrator<'a> {
     pub fn new(scene: &'a PreparedScene, options: &RenderOptions) -> Integrator<'a> {
@@ -221,7 +223,7 @@ impl<'a> Integrator<'a> {
             Some(hit) => self.shade(&self.shading(ray, hit, path), sampler, counts),
             None => self.sky(ray.direction),
         };
-        let media = !self.scene.media.is_empty();
+        let media = !self.scene.media.is_empty() && self.quality >= QUALITY_MEDIA;
         if (self.scene.fogs.is_empty() && !media) || !path.interiors.in_atmosphere() {
             return seen;
         }
