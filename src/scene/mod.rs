@@ -17,7 +17,7 @@ pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
 pub use texture::{
     Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
-    PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Turbulence, Warp, Wave,
+    PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
 };
 
 use glam::DVec3;

@@ -96,6 +96,15 @@ pub enum Warp {
     Transform(Transform),
 }
 
+/// A df3 file's voxels (x fastest, then y, then z), scaled to [0, 1] by their type's
+/// largest value; `trilinear` is `interpolate 1`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VoxelGrid {
+    pub size: [usize; 3],
+    pub values: Vec<f32>,
+    pub trilinear: bool,
+}
+
 /// The pattern functions; each gives a value in [0, 1] (list patterns an entry index).
 #[derive(Clone, Debug, PartialEq)]
 pub enum PatternKind {
@@ -128,6 +137,8 @@ pub enum PatternKind {
     Spherical,
     Cylindrical,
     Boxed,
+    /// `density_file df3 "file" [interpolate k]`: a voxel grid over the unit cube.
+    DensityFile(std::sync::Arc<VoxelGrid>),
     /// `pigment_pattern { ... }`: the grey value (0.297 r + 0.589 g + 0.114 b) of a pigment.
     PigmentPattern(Box<Pigment>),
 }

@@ -21,7 +21,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "average",
     "cells",
     "crackle",
-    "density_file",
     "facets",
     "function",
     "image_pattern",
@@ -41,6 +40,7 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
 
 /// Pattern keywords penumbra models.
 const PATTERNS: &[&str] = &[
+    "density_file",
     "checker",
     "hexagon",
     "brick",
@@ -332,12 +332,40 @@ impl Evaluator<'_> {
             "spherical" => PatternKind::Spherical,
             "cylindrical" => PatternKind::Cylindrical,
             "boxed" => PatternKind::Boxed,
+            "density_file" => PatternKind::DensityFile(std::sync::Arc::new(self.density_file()?)),
             _ => {
                 // pigment_pattern
                 let pig = self.pigment_body_from_keyword()?;
                 PatternKind::PigmentPattern(Box::new(pig))
             }
         })
+    }
+
+    /// `df3 "file" [interpolate k]` after `density_file`.
+    fn density_file(&mut self) -> R<crate::scene::VoxelGrid> {
+        let tok = self.next()?;
+        if !tok.is_ident("df3") {
+            return Err(self.expected("`df3` after `density_file`", &tok));
+        }
+        let (v, span) = self.expr()?;
+        let Value::Str(name) = v else {
+            return Err(self.err(span, "expected the df3 file name as a string"));
+        };
+        let Some(path) = self.resolve_include(&name) else {
+            return Err(self.err(span, format!("cannot find the density file \"{name}\"")));
+        };
+        let bytes = std::fs::read(&path)
+            .map_err(|e| self.err(span, format!("cannot read \"{name}\": {e}")))?;
+        let mut grid = read_df3(&bytes).map_err(|e| self.err(span, format!("\"{name}\": {e}")))?;
+        if self.peek()?.is_ident("interpolate") {
+            let tok = self.next()?;
+            let k = self.float()?;
+            if k == 2.0 {
+                return Err(self.unsupported(&tok, "tricubic df3 interpolation"));
+            }
+            grid.trilinear = k == 1.0;
+        }
+        Ok(grid)
     }
 
     fn pigment_body_from_keyword(&mut self) -> R<Pigment> {
@@ -1229,4 +1257,44 @@ impl Evaluator<'_> {
         }
         Ok(t)
     }
+}
+
+/// A df3 file: three big-endian 16-bit sizes, then the voxels, 8, 16 or 32 bits each
+/// (big-endian; the width follows from the file's length).
+fn read_df3(bytes: &[u8]) -> Result<crate::scene::VoxelGrid, String> {
+    if bytes.len() < 6 {
+        return Err("too short for a df3 header".into());
+    }
+    let dim = |k: usize| usize::from(u16::from_be_bytes([bytes[2 * k], bytes[2 * k + 1]]));
+    let size = [dim(0), dim(1), dim(2)];
+    let count = size[0] * size[1] * size[2];
+    let body = &bytes[6..];
+    if count == 0 || !body.len().is_multiple_of(count) {
+        return Err(format!(
+            "{} bytes of voxels do not fit a {}x{}x{} grid",
+            body.len(),
+            size[0],
+            size[1],
+            size[2]
+        ));
+    }
+    let values = match body.len() / count {
+        1 => body.iter().map(|&b| f32::from(b) / 255.0).collect(),
+        2 => body
+            .chunks_exact(2)
+            .map(|c| f32::from(u16::from_be_bytes([c[0], c[1]])) / 65535.0)
+            .collect(),
+        4 => body
+            .chunks_exact(4)
+            .map(|c| {
+                (f64::from(u32::from_be_bytes([c[0], c[1], c[2], c[3]])) / 4_294_967_295.0) as f32
+            })
+            .collect(),
+        w => return Err(format!("{w} bytes per voxel; df3 has 1, 2 or 4")),
+    };
+    Ok(crate::scene::VoxelGrid {
+        size,
+        values,
+        trilinear: false,
+    })
 }
