@@ -218,7 +218,7 @@ pub const OPTIONS: &[PovOption] = &[
         Quality,
         [
             "0-1 quick colours, 2-3 no shadows, 4 no area lights, 5 area lights, 6-7 textures, 8 reflection and refraction, 9 media, 10-11 radiosity (default 9)",
-            "the same cut-offs: below 4 no shadows, below 5 area lights as points, below 8 no reflection or refraction, 0-1 pigment colour only",
+            "the same cut-offs: below 4 no shadows, below 5 area lights as points, below 8 no reflection or refraction, below 9 no media, 0-1 pigment colour only",
         ],
     ),
     opt(
