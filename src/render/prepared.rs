@@ -71,7 +71,11 @@ impl PreparedScene {
     /// Which sampler dimension each decision reads: it depends on the lights (and the
     /// optional decisions the scene makes), never on the objects.
     pub fn dimension_layout(&self) -> DimensionLayout {
-        DimensionLayout::new(self.lights.len(), OptionalDecisions::default())
+        let optional = OptionalDecisions {
+            dispersion: self.materials.iter().any(|m| m.interior.disperses()),
+            ..OptionalDecisions::default()
+        };
+        DimensionLayout::new(self.lights.len(), optional)
     }
 
     pub fn new(scene: &Scene) -> PreparedScene {

@@ -446,6 +446,21 @@ pub struct Interior {
     /// 0 means no fade; >= 1000 means exponential fade.
     pub fade_power: f64,
     pub fade_colour: DVec3,
+    /// `caustics`: POV-Ray's fake caustics, which brighten the light shadow rays bring
+    /// through the surfaces where they cross them near the normal (0: none).
+    pub caustics: f64,
+    /// `dispersion`: the ratio of the largest to the smallest index of refraction, spread
+    /// over `dispersion_samples` wavelengths (1: none).
+    pub dispersion: f64,
+    /// `dispersion_samples`: wavelengths a dispersing refraction splits light into (>= 2).
+    pub dispersion_samples: u32,
+}
+
+impl Interior {
+    /// Whether refraction into this interior splits light into wavelengths.
+    pub fn disperses(&self) -> bool {
+        self.dispersion != 1.0
+    }
 }
 
 impl Default for Interior {
@@ -455,6 +470,9 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_colour: DVec3::ZERO,
+            caustics: 0.0,
+            dispersion: 1.0,
+            dispersion_samples: 7,
         }
     }
 }

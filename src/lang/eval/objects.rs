@@ -642,7 +642,12 @@ impl Evaluator<'_> {
                     ev.next()?;
                     ev.interior_fade_item(&w, interior)?;
                 }
-                Some(w @ ("caustics" | "dispersion" | "dispersion_samples" | "media")) => {
+                Some(w @ ("caustics" | "dispersion" | "dispersion_samples")) => {
+                    let w = w.to_string();
+                    ev.next()?;
+                    ev.interior_light_item(&w, interior)?;
+                }
+                Some(w @ "media") => {
                     let w = w.to_string();
                     ev.unsupported_or_skip(tok, &w)?;
                 }

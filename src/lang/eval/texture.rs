@@ -1020,6 +1020,24 @@ impl Evaluator<'_> {
         Ok(())
     }
 
+    /// `caustics`, `dispersion` or `dispersion_samples` in an interior, after the keyword.
+    pub(super) fn interior_light_item(&mut self, word: &str, interior: &mut Interior) -> R<()> {
+        match word {
+            "caustics" => interior.caustics = self.float()?,
+            "dispersion" => interior.dispersion = self.positive_float("dispersion")?,
+            _ => {
+                let (v, s) = self.expr()?;
+                let n = self.to_float(&v, s)?;
+                // POV-Ray refuses fewer than two ("Dispersion samples minimum is 2").
+                if n < 2.0 || !n.is_finite() {
+                    return Err(self.err(s, "dispersion_samples must be at least 2"));
+                }
+                interior.dispersion_samples = n.min(f64::from(u16::MAX)) as u32;
+            }
+        }
+        Ok(())
+    }
+
     /// A second `texture` on an object goes on top of the ones before it.
     pub(super) fn layer_texture(below: Option<Texture>, mut top: Texture) -> Texture {
         if let Some(mut b) = below {
