@@ -1,7 +1,7 @@
 // Dispersion: a prism and a sphere of dispersing glass in front of sharp black and white
 // stripes, so each edge seen through them fans out into POV-Ray's wavelengths. The prism
 // (ior 1.5, dispersion 1.15, 7 samples by default) bends the stripes; the sphere (ior 1.4,
-// dispersion 1.2, 3 samples, with a Fresnel reflection) disperses on the way in and keeps
+// dispersion 1.2, 3 samples, with a mirror reflection) disperses on the way in and keeps
 // the wavelength on the way out; a second, clear prism behind it refracts a dispersed ray
 // at its own single ior.
 #version 3.7;
@@ -39,7 +39,7 @@ intersection {
 sphere {
   <0.9, 1.1, 0>, 0.75
   pigment { color rgbf <1, 1, 1, 0.95> }
-  finish { ambient 0 diffuse 0.05 phong 0.6 phong_size 80 reflection { 0, 1 fresnel } }
+  finish { ambient 0 diffuse 0.05 phong 0.6 phong_size 80 reflection 0.08 }
   interior { ior 1.4 dispersion 1.2 dispersion_samples 3 }
 }
 box {
