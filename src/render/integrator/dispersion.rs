@@ -51,6 +51,7 @@ const STEPS: usize = 70;
 
 /// The hue curve: the colour per unit of the wavelength parameter (0 the least refracted),
 /// on 70 equal steps, as measured (see the module documentation).
+#[allow(clippy::approx_constant)] // Measured figures; one lies near log10(2) by chance.
 const HUE: [[f64; 3]; STEPS] = [
     [0.6862, 0.0, 0.0],
     [0.9943, 0.0, 0.0],
@@ -121,7 +122,8 @@ const HUE: [[f64; 3]; STEPS] = [
     [0.2870, 0.0, 1.1966],
     [0.2520, 0.0, 0.9869],
     [0.2030, 0.0, 0.7631],
-    [0.1400, 0.0, 0.5251],];
+    [0.1400, 0.0, 0.5251],
+];
 
 /// The wavelength parameter of sample `i` of `n`, in (0, 1).
 pub(super) fn wavelength(i: u32, n: u32) -> f64 {

@@ -142,7 +142,10 @@ mod tests {
         for (power, tilt, floor) in measured {
             let cos = f64::to_radians(tilt).cos();
             let f = caustic_factor(power, cos);
-            assert!((f - floor).abs() < 2e-3, "{power} at {tilt}: {f} against {floor}");
+            assert!(
+                (f - floor).abs() < 2e-3,
+                "{power} at {tilt}: {f} against {floor}"
+            );
             assert_eq!(f, caustic_factor(power, -cos));
         }
         assert_eq!(caustic_factor(0.0, 1.0), 1.0);
