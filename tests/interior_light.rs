@@ -78,7 +78,7 @@ fn bad_values_are_refused_where_they_are_written() {
             .unwrap_or_else(|| panic!("{item} was accepted"));
         let text = err.to_string();
         assert!(text.contains(message), "{item}: {text}");
-        assert!(text.contains("test.pov:7:"), "{item}: {text}");
+        assert!(text.contains("test.pov:8:"), "{item}: {text}");
     }
 }
 
