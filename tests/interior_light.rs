@@ -52,14 +52,18 @@ fn render(scene: &Scene, threads: usize) -> Vec<[f32; 3]> {
 
 #[test]
 fn the_items_reach_the_interior() {
-    let s = load(&scene("ior 1.5 caustics 0.5 dispersion 1.1 dispersion_samples 5"));
+    let s = load(&scene(
+        "ior 1.5 caustics 0.5 dispersion 1.1 dispersion_samples 5",
+    ));
     let interior = s.objects[1].interior.expect("interior");
     assert_eq!(interior.caustics, 0.5);
     assert_eq!(interior.dispersion, 1.1);
     assert_eq!(interior.dispersion_samples, 5);
     assert!(interior.disperses());
     // POV-Ray's defaults: no caustics, no dispersion, 7 samples.
-    let plain = load(&scene("ior 1.5")).objects[1].interior.expect("interior");
+    let plain = load(&scene("ior 1.5")).objects[1]
+        .interior
+        .expect("interior");
     assert_eq!(plain.caustics, 0.0);
     assert_eq!(plain.dispersion, 1.0);
     assert_eq!(plain.dispersion_samples, 7);
@@ -69,7 +73,10 @@ fn the_items_reach_the_interior() {
 #[test]
 fn bad_values_are_refused_where_they_are_written() {
     for (item, message) in [
-        ("dispersion_samples 1", "dispersion_samples must be at least 2"),
+        (
+            "dispersion_samples 1",
+            "dispersion_samples must be at least 2",
+        ),
         ("dispersion 0", "dispersion must be greater than zero"),
     ] {
         let source = scene(&format!("ior 1.5 {item}"));
@@ -85,7 +92,10 @@ fn bad_values_are_refused_where_they_are_written() {
 #[test]
 fn a_dispersion_of_one_is_exactly_no_dispersion() {
     let plain = render(&load(&scene("ior 1.5")), 2);
-    let one = render(&load(&scene("ior 1.5 dispersion 1 dispersion_samples 5")), 2);
+    let one = render(
+        &load(&scene("ior 1.5 dispersion 1 dispersion_samples 5")),
+        2,
+    );
     assert!(plain == one, "dispersion 1 changed the image");
     let dispersed = render(&load(&scene("ior 1.5 dispersion 1.2")), 2);
     assert!(plain != dispersed, "dispersion 1.2 changed nothing");
@@ -93,6 +103,26 @@ fn a_dispersion_of_one_is_exactly_no_dispersion() {
 
 #[test]
 fn dispersion_and_caustics_do_not_depend_on_the_thread_count() {
-    let s = load(&scene("ior 1.5 dispersion 1.2 dispersion_samples 4 caustics 1"));
+    let s = load(&scene(
+        "ior 1.5 dispersion 1.2 dispersion_samples 4 caustics 1",
+    ));
     assert!(render(&s, 1) == render(&s, 2));
+}
+
+#[test]
+fn caustics_in_a_finish_become_a_45th_of_them_in_the_interior() {
+    // POV-Ray 3.7 warns, then lights as 1 + |cos|^c (measured: c = 1 at 40 and 60 degrees
+    // gives 1.7656 and 1.5; c = 2 gives 1.5869 and 1.25), a 45th of an interior's law.
+    let source = "#version 3.7;\nsphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 } }\n\
+                  sphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 } interior { caustics 0.5 } }";
+    let scene = load(source);
+    let finish = &scene.objects[0].texture.as_ref().expect("texture").finish;
+    assert_eq!(finish.caustics, 1.0);
+    let prepared = penumbra::render::prepared::PreparedScene::new(&scene);
+    let caustics: Vec<f64> = prepared
+        .materials
+        .iter()
+        .map(|m| m.interior.caustics)
+        .collect();
+    assert_eq!(caustics, [1.0 / 45.0, 0.5]);
 }

@@ -315,7 +315,7 @@ impl Builder {
             texture: looks.texture.clone(),
             double_illuminate: looks.flags.double_illuminate,
             transmits: may_transmit(looks.texture),
-            interior: *interior,
+            interior: with_finish_caustics(*interior, looks.texture),
             interior_id,
             hollow: looks.flags.hollow,
         });
@@ -440,6 +440,15 @@ impl Builder {
             | Shape::Difference(_) => return None,
         })
     }
+}
+
+/// The interior with the caustics an old scene wrote in the finish: POV-Ray 3.7 gives the
+/// interior a 45th of them (see `Finish::caustics`), unless the interior has its own.
+fn with_finish_caustics(mut interior: Interior, texture: &Texture) -> Interior {
+    if interior.caustics == 0.0 && texture.finish.caustics != 0.0 {
+        interior.caustics = texture.finish.caustics / 45.0;
+    }
+    interior
 }
 
 fn mask(f: ObjectFlags) -> u8 {

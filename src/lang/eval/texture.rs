@@ -803,8 +803,14 @@ impl Evaluator<'_> {
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => f.crand = self.float()?,
                 "fresnel" => f.fresnel = self.optional_bool()?,
-                "irid" | "ior" | "subsurface" | "caustics" | "fade_distance" | "fade_power"
-                | "refraction" => {
+                "caustics" => {
+                    self.warn(
+                        tok.span,
+                        "`caustics` belongs in the interior (as POV-Ray 3.7 says)",
+                    );
+                    f.caustics = self.float()?;
+                }
+                "irid" | "ior" | "subsurface" | "fade_distance" | "fade_power" | "refraction" => {
                     return Err(self.unsupported(&tok, &word));
                 }
                 _ => return Err(self.stray_in_block(&tok, "the finish")),
