@@ -9,8 +9,9 @@
 //!
 //! A scene pays only for the decisions it can make: the per-level block holds two 2D slots
 //! per light and the roulette and splitting slots always, and the optional slots (random
-//! light choice, media, diffuse bounces, dispersion) only when the scene enables them, so adding them
-//! does not move the dimensions (and so the image) of scenes that do not use them.
+//! light choice, media, diffuse bounces, dispersion) only when the scene enables them, so
+//! adding them does not move the dimensions (and so the image) of scenes that do not use
+//! them.
 
 /// What a sampler dimension is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
