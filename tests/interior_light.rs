@@ -114,7 +114,8 @@ fn caustics_in_a_finish_become_a_45th_of_them_in_the_interior() {
     // POV-Ray 3.7 warns, then lights as 1 + |cos|^c (measured: c = 1 at 40 and 60 degrees
     // gives 1.7656 and 1.5; c = 2 gives 1.5869 and 1.25), a 45th of an interior's law.
     let source = "#version 3.7;\nsphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 } }\n\
-                  sphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 } interior { caustics 0.5 } }";
+                  sphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 }\n\
+                  interior { caustics 0.5 } }";
     let scene = load(source);
     let finish = &scene.objects[0].texture.as_ref().expect("texture").finish;
     assert_eq!(finish.caustics, 1.0);
