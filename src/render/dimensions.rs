@@ -9,8 +9,9 @@
 //!
 //! A scene pays only for the decisions it can make: the per-level block holds two 2D slots
 //! per light and the roulette and splitting slots always, and the optional slots (random
-//! light choice, media, diffuse bounces) only when the scene enables them, so adding them
-//! does not move the dimensions (and so the image) of scenes that do not use them.
+//! light choice, media, diffuse bounces, dispersion) only when the scene enables them, so
+//! adding them does not move the dimensions (and so the image) of scenes that do not use
+//! them.
 
 /// What a sampler dimension is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -39,6 +40,8 @@ pub enum Purpose {
     DiffuseDirection,
     /// Russian roulette on a diffuse bounce (1D; optional).
     DiffuseRoulette,
+    /// Which of a dispersing interior's wavelengths a refracted ray carries (1D; optional).
+    Dispersion,
 }
 
 impl Purpose {
@@ -56,7 +59,8 @@ impl Purpose {
             | Purpose::Splitting
             | Purpose::LightChoice
             | Purpose::MediaDistance
-            | Purpose::DiffuseRoulette => 1,
+            | Purpose::DiffuseRoulette
+            | Purpose::Dispersion => 1,
         }
     }
 }
@@ -72,12 +76,13 @@ const ALWAYS: [Purpose; 3] = [
     Purpose::Splitting,
 ];
 /// Decisions a level has only where the scene enables their group, in this order.
-const OPTIONAL: [(Purpose, Group); 5] = [
+const OPTIONAL: [(Purpose, Group); 6] = [
     (Purpose::LightChoice, Group::LightChoice),
     (Purpose::MediaDistance, Group::Media),
     (Purpose::MediaDirection, Group::Media),
     (Purpose::DiffuseDirection, Group::Diffuse),
     (Purpose::DiffuseRoulette, Group::Diffuse),
+    (Purpose::Dispersion, Group::Dispersion),
 ];
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -85,6 +90,7 @@ enum Group {
     LightChoice,
     Media,
     Diffuse,
+    Dispersion,
 }
 
 /// Which optional decision groups a scene makes.
@@ -93,6 +99,7 @@ pub struct OptionalDecisions {
     pub light_choice: bool,
     pub media: bool,
     pub diffuse: bool,
+    pub dispersion: bool,
 }
 
 impl OptionalDecisions {
@@ -101,6 +108,7 @@ impl OptionalDecisions {
             Group::LightChoice => self.light_choice,
             Group::Media => self.media,
             Group::Diffuse => self.diffuse,
+            Group::Dispersion => self.dispersion,
         }
     }
 }
@@ -201,11 +209,12 @@ mod tests {
 
     fn all_optional() -> Vec<OptionalDecisions> {
         let mut out = Vec::new();
-        for bits in 0..8 {
+        for bits in 0..16 {
             out.push(OptionalDecisions {
                 light_choice: bits & 1 != 0,
                 media: bits & 2 != 0,
                 diffuse: bits & 4 != 0,
+                dispersion: bits & 8 != 0,
             });
         }
         out

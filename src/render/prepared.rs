@@ -76,6 +76,7 @@ impl PreparedScene {
     pub fn dimension_layout(&self) -> DimensionLayout {
         let optional = OptionalDecisions {
             media: !self.media.is_empty(),
+            dispersion: self.materials.iter().any(|m| m.interior.disperses()),
             ..OptionalDecisions::default()
         };
         DimensionLayout::new(self.lights.len(), optional)
@@ -323,10 +324,13 @@ impl Builder {
             double_illuminate: looks.flags.double_illuminate,
             transmits: may_transmit(looks.texture),
             // The media go to the scene's media table, once per interior.
-            interior: Interior {
-                media: Vec::new(),
-                ..interior.clone()
-            },
+            interior: with_finish_caustics(
+                Interior {
+                    media: Vec::new(),
+                    ..interior.clone()
+                },
+                looks.texture,
+            ),
             interior_id,
             hollow: looks.flags.hollow,
         });
@@ -451,6 +455,15 @@ impl Builder {
             | Shape::Difference(_) => return None,
         })
     }
+}
+
+/// The interior with the caustics an old scene wrote in the finish: POV-Ray 3.7 gives the
+/// interior a 45th of them (see `Finish::caustics`), unless the interior has its own.
+fn with_finish_caustics(mut interior: Interior, texture: &Texture) -> Interior {
+    if interior.caustics == 0.0 && texture.finish.caustics != 0.0 {
+        interior.caustics = texture.finish.caustics / 45.0;
+    }
+    interior
 }
 
 fn mask(f: ObjectFlags) -> u8 {

@@ -424,6 +424,10 @@ pub struct Finish {
     pub crand: f64,
     /// `fresnel` in the finish (POV-Ray 3.7): also attenuates transmitted light by 1 - R.
     pub fresnel: bool,
+    /// `caustics` written in the finish, as before POV-Ray 3.1: POV-Ray 3.7 warns and gives
+    /// the object's interior caustics of a 45th of it (measured: 1 + |cos|^c, where the
+    /// interior's `caustics c` gives 1 + |cos|^(45 c)); 0: none.
+    pub caustics: f64,
 }
 
 impl Default for Finish {
@@ -443,6 +447,7 @@ impl Default for Finish {
             conserve_energy: false,
             crand: 0.0,
             fresnel: false,
+            caustics: 0.0,
         }
     }
 }
@@ -459,6 +464,21 @@ pub struct Interior {
     pub fade_colour: DVec3,
     /// Several media in one interior add (measured: emission 0.5 and 0.25 emit 0.75).
     pub media: Vec<super::Media>,
+    /// `caustics`: POV-Ray's fake caustics, which brighten the light shadow rays bring
+    /// through the surfaces where they cross them near the normal (0: none).
+    pub caustics: f64,
+    /// `dispersion`: the ratio of the largest to the smallest index of refraction, spread
+    /// over `dispersion_samples` wavelengths (1: none).
+    pub dispersion: f64,
+    /// `dispersion_samples`: wavelengths a dispersing refraction splits light into (>= 2).
+    pub dispersion_samples: u32,
+}
+
+impl Interior {
+    /// Whether refraction into this interior splits light into wavelengths.
+    pub fn disperses(&self) -> bool {
+        self.dispersion != 1.0
+    }
 }
 
 impl Default for Interior {
@@ -469,6 +489,9 @@ impl Default for Interior {
             fade_power: 0.0,
             fade_colour: DVec3::ZERO,
             media: Vec::new(),
+            caustics: 0.0,
+            dispersion: 1.0,
+            dispersion_samples: 7,
         }
     }
 }

@@ -642,13 +642,14 @@ impl Evaluator<'_> {
                     ev.next()?;
                     ev.interior_fade_item(&w, interior)?;
                 }
+                Some(w @ ("caustics" | "dispersion" | "dispersion_samples")) => {
+                    let w = w.to_string();
+                    ev.next()?;
+                    ev.interior_light_item(&w, interior)?;
+                }
                 Some("media") => {
                     let media = ev.media()?;
                     interior.media.push(media);
-                }
-                Some(w @ ("caustics" | "dispersion" | "dispersion_samples")) => {
-                    let w = w.to_string();
-                    ev.unsupported_or_skip(tok, &w)?;
                 }
                 _ => return Err(ev.stray_in_block(tok, "the interior")),
             }

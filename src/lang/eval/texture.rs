@@ -848,8 +848,14 @@ impl Evaluator<'_> {
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => f.crand = self.float()?,
                 "fresnel" => f.fresnel = self.optional_bool()?,
-                "irid" | "ior" | "subsurface" | "caustics" | "fade_distance" | "fade_power"
-                | "refraction" => {
+                "caustics" => {
+                    self.warn(
+                        tok.span,
+                        "`caustics` belongs in the interior (as POV-Ray 3.7 says)",
+                    );
+                    f.caustics = self.float()?;
+                }
+                "irid" | "ior" | "subsurface" | "fade_distance" | "fade_power" | "refraction" => {
                     return Err(self.unsupported(&tok, &word));
                 }
                 _ => return Err(self.stray_in_block(&tok, "the finish")),
@@ -1061,6 +1067,24 @@ impl Evaluator<'_> {
             "fade_distance" => interior.fade_distance = self.float()?,
             "fade_power" => interior.fade_power = self.float()?,
             _ => interior.fade_colour = self.colour_or_float()?,
+        }
+        Ok(())
+    }
+
+    /// `caustics`, `dispersion` or `dispersion_samples` in an interior, after the keyword.
+    pub(super) fn interior_light_item(&mut self, word: &str, interior: &mut Interior) -> R<()> {
+        match word {
+            "caustics" => interior.caustics = self.float()?,
+            "dispersion" => interior.dispersion = self.positive_float("dispersion")?,
+            _ => {
+                let (v, s) = self.expr()?;
+                let n = self.to_float(&v, s)?;
+                // POV-Ray refuses fewer than two ("Dispersion samples minimum is 2").
+                if n < 2.0 || !n.is_finite() {
+                    return Err(self.err(s, "dispersion_samples must be at least 2"));
+                }
+                interior.dispersion_samples = n.min(f64::from(u16::MAX)) as u32;
+            }
         }
         Ok(())
     }

@@ -5,16 +5,17 @@
 use glam::DVec3;
 
 use crate::appearance::finish::{diffuse_term, metallic_tint, phong_factor, specular_factor};
-use crate::appearance::texture_layers;
-use crate::geometry::{Ray, offset_point};
+use crate::appearance::{perturbed_normal, texture_layers};
+use crate::geometry::{Hit, Ray, offset_point};
 use crate::render::dimensions::Purpose;
 use crate::render::lights::LightSamples;
 use crate::render::lights::{AreaLightMode, PreparedArea, PreparedLight};
+use crate::render::prepared::{Material, PreparedScene};
 use crate::render::sampler::{PixelSampler, permute};
 use crate::scene::{Colour, Finish};
 
 use super::interiors::InteriorStack;
-use super::optics::fade;
+use super::optics::{caustic_factor, fade};
 use super::{Integrator, RayCounts, Shading};
 use crate::render::fog::{Segment, light_through_fog};
 
@@ -354,6 +355,9 @@ impl Integrator<'_> {
                 let c = layer.colour;
                 filter *= c.rgb * c.filter + DVec3::splat(c.transmit);
             }
+            if material.interior.caustics != 0.0 {
+                filter *= caustics_at(scene, ray, hit, material);
+            }
             filter != DVec3::ZERO
         });
         if filter == DVec3::ZERO {
@@ -394,6 +398,20 @@ impl Integrator<'_> {
         }
         filter
     }
+}
+
+/// The fake caustics of `material`'s interior where a shadow ray crosses its surface at
+/// `hit`, from the angle to the perturbed normal ([`caustic_factor`]).
+fn caustics_at(scene: &PreparedScene, ray: &Ray, hit: &Hit, material: &Material) -> f64 {
+    let surface = scene.world.surface(ray, hit);
+    let d = ray.direction.normalize();
+    let facing = if surface.shading_normal.dot(d) > 0.0 {
+        -surface.shading_normal
+    } else {
+        surface.shading_normal
+    };
+    let n = perturbed_normal(&material.texture, &surface, facing);
+    caustic_factor(material.interior.caustics, n.dot(d))
 }
 
 /// The light's grid shared out over the pixel's samples. Sample k of N tests L = ceil(points

@@ -14,6 +14,7 @@
 //! refraction and fade; `interiors.rs` the stack of interiors a ray is inside.
 
 mod direct;
+mod dispersion;
 mod interiors;
 mod media;
 mod optics;
@@ -83,6 +84,8 @@ struct Path {
     weight: f64,
     skip: u8,
     interiors: InteriorStack,
+    /// The wavelength parameter the ray took at a dispersing refraction (`dispersion.rs`).
+    wavelength: Option<f64>,
 }
 
 /// Everything shading needs to know about one hit, built once per hit in `trace`.
@@ -116,6 +119,7 @@ struct Top<'f> {
 }
 
 /// Where a surface sends the rest of the light, and how much of it, per channel.
+#[derive(Clone, Copy)]
 struct Branches {
     mirror: DVec3,
     reflect: DVec3,
@@ -135,6 +139,7 @@ struct Branch {
     level: u32,
     skip: u8,
     interiors: InteriorStack,
+    wavelength: Option<f64>,
     /// The path's weight along this branch, before roulette.
     weight: f64,
     /// Whether the branch's light enters linearly (a reflection exponent does not), which
@@ -201,6 +206,7 @@ impl<'a> Integrator<'a> {
             weight: 1.0,
             skip: flags::NO_IMAGE,
             interiors: self.camera_interiors,
+            wavelength: None,
         };
         let l = self.trace(ray, path, sampler, counts);
         match self.scene.output_gamma {
@@ -388,6 +394,7 @@ impl<'a> Integrator<'a> {
             level: s.path.level + 1,
             skip: flags::NO_REFLECTION,
             interiors: s.path.interiors,
+            wavelength: s.path.wavelength,
             weight: s.path.weight * b.reflect.max_element() / chosen,
             linear: e == 1.0,
             roulette: Purpose::RouletteReflection,
@@ -413,6 +420,7 @@ impl<'a> Integrator<'a> {
         counts: &mut RayCounts,
     ) -> Option<DVec3> {
         let path = &s.path;
+        let (b, wavelength) = self.disperse(s, b, sampler);
         let (dir, level, interiors, skip) = match b.refracted {
             Some(_) if b.straight => (s.d, path.level, b.beyond, path.skip),
             Some(dir) => (dir, path.level + 1, b.beyond, path.skip & !flags::NO_IMAGE),
@@ -423,6 +431,7 @@ impl<'a> Integrator<'a> {
             level,
             skip,
             interiors,
+            wavelength,
             weight: path.weight * b.transmit.max_element() / chosen,
             linear: true,
             roulette: Purpose::RouletteTransmission,
@@ -451,6 +460,7 @@ impl<'a> Integrator<'a> {
             weight: branch.weight / q,
             skip: branch.skip,
             interiors: branch.interiors,
+            wavelength: branch.wavelength,
         };
         Some((
             self.trace(&Ray::new(origin, branch.dir), next, sampler, counts),
@@ -552,7 +562,13 @@ fn branches(s: &Shading, top: &Top) -> Branches {
 
 /// Indices of refraction on the ray's side and beyond the surface, and the interiors beyond.
 fn crossing(s: &Shading) -> (f64, f64, InteriorStack) {
-    let (id, ior) = (s.material.interior_id, s.material.interior.ior);
+    crossing_at(s, s.path.wavelength)
+}
+
+/// [`crossing`] for a ray of wavelength parameter `wavelength`.
+fn crossing_at(s: &Shading, wavelength: Option<f64>) -> (f64, f64, InteriorStack) {
+    let id = s.material.interior_id;
+    let ior = dispersion::interior_ior(s.material, wavelength);
     let inside = &s.path.interiors;
     if s.leaving {
         let beyond = inside.left(id);

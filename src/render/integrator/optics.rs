@@ -47,6 +47,28 @@ pub(super) fn mirror_direction(d: DVec3, n: DVec3, outside: DVec3) -> DVec3 {
     }
 }
 
+/// POV-Ray's fake caustics: what `interior { caustics power }` multiplies the light of a
+/// shadow ray by where it crosses the object's surface at `cos` (the cosine between the ray
+/// and the surface's perturbed normal, either way round): `1 + |cos|^(45 power)`, at each
+/// surface crossed. Measured with a parallel light straight above a transparent tilted
+/// plane (ior 1, rgbf 1) over a white floor: the floor doubles where the plane is level,
+/// whatever the power, and at power 0.02 it is 1.9863, 1.9453, 1.8789, 1.7871, 1.6719,
+/// 1.5361, 1.3809, 1.2070 at 10 .. 80 degrees of tilt, an exponent of 45.0 +- 0.2 times the
+/// power at every angle (power 0.01 to 10 and -1 alike: power 1 at 10 degrees 1.5020). It
+/// multiplies the filtered light (filter 0.5 transmit 0.25 level: 0.75 x 2), ignores the
+/// ior and the side the normal faces, applies at both surfaces of a sphere (the floor under
+/// a glass sphere, 1 + c^0.9 squared to 1e-3), and follows the normal's perturbation (bumps
+/// on the level plane spread the floor between 1 and 2). A power of 0 is none.
+pub(super) fn caustic_factor(power: f64, cos: f64) -> f64 {
+    if power == 0.0 {
+        return 1.0;
+    }
+    1.0 + cos.abs().max(1e-12).powf(CAUSTIC_EXPONENT * power)
+}
+
+/// The exponent of [`caustic_factor`] per unit of `caustics`.
+const CAUSTIC_EXPONENT: f64 = 45.0;
+
 /// Interior fade over `distance` inside an object.
 pub(super) fn fade(material: &Material, distance: f64) -> DVec3 {
     let colour = material.interior.fade_colour;
@@ -100,6 +122,33 @@ mod tests {
             let r = fresnel(c, 1.33);
             assert!((0.0..=1.0).contains(&r));
         }
+    }
+
+    #[test]
+    fn caustics_follow_the_measured_law() {
+        // POV-Ray 3.7: the floor under a level plane doubles; caustics 0.02 at tilts of
+        // 10 .. 80 degrees, caustics 1 at 10 and 20 degrees, caustics -1 at 10 degrees.
+        assert_eq!(caustic_factor(0.02, 1.0), 2.0);
+        let measured = [
+            (0.02, 10.0, 1.9863),
+            (0.02, 30.0, 1.8789),
+            (0.02, 50.0, 1.6719),
+            (0.02, 80.0, 1.2070),
+            (1.0, 10.0, 1.5020),
+            (1.0, 20.0, 1.0605),
+            (2.0, 10.0, 1.2520),
+            (-1.0, 10.0, 2.9922),
+        ];
+        for (power, tilt, floor) in measured {
+            let cos = f64::to_radians(tilt).cos();
+            let f = caustic_factor(power, cos);
+            assert!(
+                (f - floor).abs() < 2e-3,
+                "{power} at {tilt}: {f} against {floor}"
+            );
+            assert_eq!(f, caustic_factor(power, -cos));
+        }
+        assert_eq!(caustic_factor(0.0, 1.0), 1.0);
     }
 
     #[test]
