@@ -2,6 +2,7 @@
 
 mod aabb;
 mod bvh;
+mod prism;
 mod ray;
 mod roots;
 mod shapes;
@@ -10,6 +11,7 @@ mod world;
 
 pub use aabb::Aabb;
 pub use bvh::Bvh;
+pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use transform::Transform;

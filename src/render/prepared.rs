@@ -6,7 +6,8 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    CsgOp, Item, PolygonData, ShapeKind, Transform, TriangleData, World, WorldBuilder, flags,
+    CsgOp, Item, PolygonData, PrismData, ShapeKind, Transform, TriangleData, World, WorldBuilder,
+    flags,
 };
 use crate::scene::{
     Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere, Texture,
@@ -440,6 +441,20 @@ impl Builder {
                 (
                     ShapeKind::Polygon((self.world.tables.polygons.len() - 1) as u32),
                     Some(frame),
+                )
+            }
+            Shape::Prism(ref prism) => {
+                let profile = crate::scene::prism_profile(prism.spline, &prism.points).ok()?;
+                self.world.tables.prisms.push(PrismData::new(
+                    &profile.segments,
+                    prism.height1,
+                    prism.height2,
+                    prism.conic,
+                    prism.open,
+                ));
+                (
+                    ShapeKind::Prism((self.world.tables.prisms.len() - 1) as u32),
+                    None,
                 )
             }
             Shape::Triangle { .. }

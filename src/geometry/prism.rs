@@ -1,0 +1,297 @@
+//! The prism: closed spline curves in the x-z plane, filled by the even-odd rule, swept
+//! along y (linear sweep) or towards the origin (conic sweep: the curves at height y are
+//! the profile scaled by y). Every crossing is found, however many segments a ray passes,
+//! without allocation.
+
+use glam::{DVec2, DVec3};
+
+use super::roots::roots_in;
+use super::{Aabb, Ray};
+use crate::scene::Segment;
+use crate::scene::spline::{evaluate, tangent};
+
+/// A segment with its bounding rectangle in profile coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProfileSegment {
+    pub c: Segment,
+    pub lo: DVec2,
+    pub hi: DVec2,
+    /// Straight (the quadratic and cubic terms are zero).
+    pub straight: bool,
+}
+
+impl ProfileSegment {
+    pub fn new(c: Segment) -> ProfileSegment {
+        let (lo, hi) = segment_bounds(&c);
+        ProfileSegment {
+            c,
+            lo,
+            hi,
+            straight: c[2] == DVec2::ZERO && c[3] == DVec2::ZERO,
+        }
+    }
+}
+
+/// The exact bounding rectangle of a segment: its ends and the turning points inside.
+fn segment_bounds(c: &Segment) -> (DVec2, DVec2) {
+    let (a, b) = (evaluate(c, 0.0), evaluate(c, 1.0));
+    let (mut lo, mut hi) = (a.min(b), a.max(b));
+    for axis in 0..2 {
+        let d = [3.0 * c[3][axis], 2.0 * c[2][axis], c[1][axis]];
+        for &s in roots_in(&d, 0.0, 1.0).as_slice() {
+            let p = evaluate(c, s);
+            lo = lo.min(p);
+            hi = hi.max(p);
+        }
+    }
+    (lo, hi)
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PrismData {
+    pub segments: Vec<ProfileSegment>,
+    /// The heights, lowest first.
+    pub y_lo: f64,
+    pub y_hi: f64,
+    pub conic: bool,
+    pub open: bool,
+    /// The profile's bounding rectangle.
+    pub lo: DVec2,
+    pub hi: DVec2,
+}
+
+impl PrismData {
+    pub fn new(segments: &[Segment], h1: f64, h2: f64, conic: bool, open: bool) -> PrismData {
+        let segments: Vec<ProfileSegment> =
+            segments.iter().map(|&c| ProfileSegment::new(c)).collect();
+        let lo = segments.iter().fold(DVec2::INFINITY, |a, s| a.min(s.lo));
+        let hi = segments
+            .iter()
+            .fold(DVec2::NEG_INFINITY, |a, s| a.max(s.hi));
+        PrismData {
+            segments,
+            y_lo: h1.min(h2),
+            y_hi: h1.max(h2),
+            conic,
+            open,
+            lo,
+            hi,
+        }
+    }
+
+    pub fn bounds(&self) -> Aabb {
+        let at = |y: f64| {
+            let s = if self.conic { y } else { 1.0 };
+            Aabb::new(
+                DVec3::new(self.lo.x * s, y, self.lo.y * s),
+                DVec3::new(self.hi.x * s, y, self.hi.y * s),
+            )
+        };
+        at(self.y_lo).union(&at(self.y_hi))
+    }
+
+    /// The profile point a point of the solid maps to (its x and z, divided by y when
+    /// the sweep is conic).
+    fn profile_point(&self, p: DVec3) -> DVec2 {
+        let q = DVec2::new(p.x, p.z);
+        if self.conic { q / p.y } else { q }
+    }
+
+    /// Even-odd rule: crossings of the ray from `q` towards +u.
+    pub fn profile_contains(&self, q: DVec2) -> bool {
+        if !(q.cmpge(self.lo).all() && q.cmple(self.hi).all()) {
+            return false;
+        }
+        let mut inside = false;
+        for seg in &self.segments {
+            if q.y < seg.lo.y || q.y > seg.hi.y || q.x > seg.hi.x {
+                continue;
+            }
+            let (a, b) = (seg.c[0], evaluate(&seg.c, 1.0));
+            if seg.straight || q.x < seg.lo.x {
+                // Wholly to the right: the parity of crossings is that of the ends.
+                if (a.y > q.y) != (b.y > q.y) {
+                    let x = if seg.straight {
+                        a.x + (q.y - a.y) / (b.y - a.y) * (b.x - a.x)
+                    } else {
+                        f64::INFINITY
+                    };
+                    if q.x < x {
+                        inside = !inside;
+                    }
+                }
+                continue;
+            }
+            let c = &seg.c;
+            let poly = [c[3].y, c[2].y, c[1].y, c[0].y - q.y];
+            for &s in roots_in(&poly, 0.0, 1.0).as_slice() {
+                if s < 1.0 && evaluate(c, s).x > q.x {
+                    inside = !inside;
+                }
+            }
+        }
+        inside
+    }
+
+    pub fn inside(&self, p: DVec3) -> bool {
+        p.y > self.y_lo && p.y < self.y_hi && self.profile_contains(self.profile_point(p))
+    }
+
+    /// Calls `f` with every crossing of the surface along the ray's line.
+    pub fn each_hit(&self, ray: &Ray, mut f: impl FnMut(f64)) {
+        let (o, d) = (ray.origin, ray.direction);
+        if !self.open && d.y != 0.0 {
+            for h in [self.y_lo, self.y_hi] {
+                if self.conic && h == 0.0 {
+                    continue;
+                }
+                let t = (h - o.y) / d.y;
+                let p = o + d * t;
+                let scale = if self.conic { h } else { 1.0 };
+                if self.profile_contains(DVec2::new(p.x, p.z) / scale) {
+                    f(t);
+                }
+            }
+        }
+        if self.conic {
+            self.conic_sides(ray, &mut f);
+        } else {
+            self.linear_sides(ray, &mut f);
+        }
+    }
+
+    fn linear_sides(&self, ray: &Ray, f: &mut impl FnMut(f64)) {
+        let (o, d) = (ray.origin, ray.direction);
+        let (o2, d2) = (DVec2::new(o.x, o.z), DVec2::new(d.x, d.z));
+        let dd = d2.length_squared();
+        if dd == 0.0 {
+            return;
+        }
+        // The line through the ray's footprint: n . (q - o2) = 0.
+        let n = DVec2::new(d2.y, -d2.x);
+        for seg in &self.segments {
+            if !straddles(seg, |q| n.dot(q - o2)) {
+                continue;
+            }
+            let c = &seg.c;
+            let poly = [n.dot(c[3]), n.dot(c[2]), n.dot(c[1]), n.dot(c[0] - o2)];
+            for &s in roots_in(&poly, 0.0, 1.0).as_slice() {
+                let t = (evaluate(c, s) - o2).dot(d2) / dd;
+                let y = o.y + t * d.y;
+                if y >= self.y_lo && y <= self.y_hi {
+                    f(t);
+                }
+            }
+        }
+    }
+
+    fn conic_sides(&self, ray: &Ray, f: &mut impl FnMut(f64)) {
+        let (o, d) = (ray.origin, ray.direction);
+        // The surface point (u, 1, v) y lies on the ray when (u, 1, v) is in the plane
+        // through the origin holding the ray: n . (u, 1, v) = 0.
+        let n = o.cross(d);
+        if n == DVec3::ZERO {
+            return;
+        }
+        for seg in &self.segments {
+            if !straddles(seg, |q| n.x * q.x + n.z * q.y + n.y) {
+                continue;
+            }
+            let c = &seg.c;
+            let k = |v: DVec2| n.x * v.x + n.z * v.y;
+            let poly = [k(c[3]), k(c[2]), k(c[1]), k(c[0]) + n.y];
+            for &s in roots_in(&poly, 0.0, 1.0).as_slice() {
+                let q = evaluate(c, s);
+                let w = DVec3::new(q.x, 1.0, q.y);
+                let dw = d.cross(w);
+                let denom = dw.length_squared();
+                if denom == 0.0 {
+                    continue;
+                }
+                let t = -o.cross(w).dot(dw) / denom;
+                let y = o.y + t * d.y;
+                if y >= self.y_lo && y <= self.y_hi {
+                    f(t);
+                }
+            }
+        }
+    }
+
+    /// The outward normal at a point on the surface: a cap's, or the side's at the nearest
+    /// point of the profile.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let q = self.profile_point(p);
+        let scale = if self.conic { p.y.abs() } else { 1.0 };
+        let (dist, seg, s) = self.nearest_on_profile(q);
+        if !self.open {
+            let (below, above) = ((p.y - self.y_lo).abs(), (p.y - self.y_hi).abs());
+            if below.min(above) < dist * scale || !q.is_finite() {
+                return if below < above { -DVec3::Y } else { DVec3::Y };
+            }
+        }
+        let Some(seg) = seg else {
+            return DVec3::Y;
+        };
+        let c = &self.segments[seg].c;
+        let t = tangent(c, s);
+        let mut n = if self.conic {
+            let at = evaluate(c, s);
+            DVec3::new(-t.y, t.y * at.x - t.x * at.y, t.x)
+        } else {
+            DVec3::new(t.y, 0.0, -t.x)
+        };
+        // Outward: a step along the normal leaves the filled profile.
+        let m = DVec2::new(n.x, n.z).normalize_or_zero();
+        let size = (self.hi - self.lo).max_element().max(1e-300);
+        let step = if self.conic && p.y < 0.0 { -m } else { m };
+        if self.profile_contains(q + step * (1e-7 * size)) {
+            n = -n;
+        }
+        n
+    }
+
+    /// Distance from `q` to the nearest profile curve, with its segment and parameter.
+    fn nearest_on_profile(&self, q: DVec2) -> (f64, Option<usize>, f64) {
+        let mut best = (f64::INFINITY, None, 0.0);
+        for (i, seg) in self.segments.iter().enumerate() {
+            let gap = (seg.lo - q).max(q - seg.hi).max(DVec2::ZERO).length();
+            if gap >= best.0 {
+                continue;
+            }
+            let c = &seg.c;
+            let mut consider = |s: f64| {
+                let dist = (evaluate(c, s) - q).length();
+                if dist < best.0 {
+                    best = (dist, Some(i), s);
+                }
+            };
+            consider(0.0);
+            consider(1.0);
+            for axis in 0..2 {
+                let poly = [c[3][axis], c[2][axis], c[1][axis], c[0][axis] - q[axis]];
+                for &s in roots_in(&poly, 0.0, 1.0).as_slice() {
+                    consider(s);
+                }
+            }
+        }
+        best
+    }
+}
+
+/// Whether a linear function of profile points changes sign over a segment's rectangle.
+fn straddles(seg: &ProfileSegment, g: impl Fn(DVec2) -> f64) -> bool {
+    let corners = [
+        seg.lo,
+        DVec2::new(seg.hi.x, seg.lo.y),
+        DVec2::new(seg.lo.x, seg.hi.y),
+        seg.hi,
+    ];
+    let mut pos = false;
+    let mut neg = false;
+    for c in corners {
+        let v = g(c);
+        pos |= v >= 0.0;
+        neg |= v <= 0.0;
+    }
+    pos && neg
+}

@@ -1,0 +1,134 @@
+//! The spline shapes: `prism` (and, sharing the point lists, `lathe` and `sor`).
+
+use glam::DVec2;
+
+use super::super::diagnostics::{Diagnostic, Span};
+use super::super::syntax::{Punct, Token};
+use super::Evaluator;
+use super::value::ObjectValue;
+use crate::scene::{Object, Prism, Shape, SplineKind};
+
+type R<T> = Result<T, Diagnostic>;
+
+/// Words that end a point list: where a missing point shows.
+const AFTER_POINTS: &[&str] = &[
+    "open",
+    "sturm",
+    "texture",
+    "pigment",
+    "finish",
+    "normal",
+    "interior",
+    "material",
+    "translate",
+    "rotate",
+    "scale",
+    "matrix",
+    "transform",
+    "inverse",
+    "hollow",
+    "no_shadow",
+    "no_image",
+    "no_reflection",
+    "double_illuminate",
+    "clipped_by",
+    "bounded_by",
+];
+
+pub(super) fn spline_keyword(word: &str) -> Option<SplineKind> {
+    Some(match word {
+        "linear_spline" => SplineKind::Linear,
+        "quadratic_spline" => SplineKind::Quadratic,
+        "cubic_spline" => SplineKind::Cubic,
+        "bezier_spline" => SplineKind::Bezier,
+        _ => return None,
+    })
+}
+
+impl Evaluator<'_> {
+    /// `prism { [sweep] [spline] h1, h2, n, <u, v> ... }` up to the modifiers.
+    pub(super) fn prism_items(&mut self, kw: &Token) -> R<ObjectValue> {
+        let mut spline = SplineKind::Linear;
+        let mut conic = false;
+        loop {
+            let tok = self.peek()?;
+            match tok.ident() {
+                Some("linear_sweep") => conic = false,
+                Some("conic_sweep") => conic = true,
+                Some(w) => match spline_keyword(w) {
+                    Some(k) => spline = k,
+                    None => break,
+                },
+                None => break,
+            }
+            self.next()?;
+        }
+        let height1 = self.float()?;
+        self.eat(Punct::Comma)?;
+        let height2 = self.float()?;
+        self.eat(Punct::Comma)?;
+        let (points, count_span) = self.point_list("prism", 3)?;
+        let profile =
+            crate::scene::prism_profile(spline, &points).map_err(|m| self.err(count_span, m))?;
+        if profile.closed_for_you {
+            self.warn(kw.span, "the linear prism is not closed; closing it");
+        }
+        if height1 == height2 {
+            self.warn(
+                kw.span,
+                "the prism's two heights are equal: it has no volume",
+            );
+        }
+        Ok(ObjectValue {
+            object: Some(Object::new(Shape::Prism(Prism {
+                spline,
+                conic,
+                height1,
+                height2,
+                points,
+                open: false,
+            }))),
+            lights: Vec::new(),
+        })
+    }
+
+    /// `n, <u, v>, ...`: the count, then exactly that many 2-D points (commas optional);
+    /// the span of the count for errors about the points.
+    pub(super) fn point_list(&mut self, what: &str, least: usize) -> R<(Vec<DVec2>, Span)> {
+        let (v, count_span) = self.expr()?;
+        let n = self.to_float(&v, count_span)?;
+        if n.fract() != 0.0 || n < least as f64 || n > 1e7 {
+            return Err(self.err(
+                count_span,
+                format!("a {what} needs a whole number of points, at least {least}, found {n}"),
+            ));
+        }
+        let n = n as usize;
+        self.count_objects(1, n * std::mem::size_of::<DVec2>(), count_span)?;
+        let mut points = Vec::with_capacity(n.min(1 << 16));
+        for i in 0..n {
+            self.eat(Punct::Comma)?;
+            let tok = self.peek()?;
+            let ends = tok.is_punct(Punct::RBrace)
+                || tok.ident().is_some_and(|w| AFTER_POINTS.contains(&w));
+            if ends {
+                return Err(self.err(
+                    count_span,
+                    format!("the {what} declares {n} points but gives {i}"),
+                ));
+            }
+            let (v, s) = self.expr()?;
+            let p = self.to_vec3(&v, s)?;
+            points.push(DVec2::new(p.x, p.y));
+        }
+        self.eat(Punct::Comma)?;
+        let tok = self.peek()?;
+        if tok.is_punct(Punct::Lt) {
+            return Err(self.err(
+                tok.span,
+                format!("more points than the {n} the {what} declares"),
+            ));
+        }
+        Ok((points, count_span))
+    }
+}
