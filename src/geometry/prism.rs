@@ -295,3 +295,150 @@ fn straddles(seg: &ProfileSegment, g: impl Fn(DVec2) -> f64) -> bool {
     }
     pos && neg
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{SplineKind, prism_profile};
+
+    fn prism(kind: SplineKind, pts: &[(f64, f64)], conic: bool) -> PrismData {
+        let pts: Vec<DVec2> = pts.iter().map(|&(x, y)| DVec2::new(x, y)).collect();
+        let profile = prism_profile(kind, &pts).unwrap();
+        PrismData::new(&profile.segments, 0.0, 1.0, conic, false)
+    }
+
+    fn hits(p: &PrismData, o: DVec3, d: DVec3) -> Vec<f64> {
+        let mut v = Vec::new();
+        p.each_hit(&Ray::new(o, d), |t| v.push(t));
+        v.sort_by(f64::total_cmp);
+        v
+    }
+
+    const SQUARE_WITH_HOLE: [(f64, f64); 10] = [
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 4.0),
+        (0.0, 4.0),
+        (0.0, 0.0),
+        (1.0, 1.0),
+        (3.0, 1.0),
+        (3.0, 3.0),
+        (1.0, 3.0),
+        (1.0, 1.0),
+    ];
+
+    #[test]
+    fn linear_prism_sides_caps_and_hole() {
+        let p = prism(SplineKind::Linear, &SQUARE_WITH_HOLE, false);
+        // Along x through the hole: four side crossings.
+        let t = hits(&p, DVec3::new(-5.0, 0.5, 2.0), DVec3::X);
+        assert_eq!(t, vec![5.0, 6.0, 8.0, 9.0]);
+        let n = p.normal(DVec3::new(0.0, 0.5, 2.0)).normalize();
+        assert!((n + DVec3::X).length() < 1e-12, "{n}");
+        let n = p.normal(DVec3::new(1.0, 0.5, 2.0)).normalize();
+        assert!(
+            (n - DVec3::X).length() < 1e-12,
+            "the hole's wall faces into it: {n}"
+        );
+        // Down onto the top cap, and through the hole to nothing.
+        let t = hits(&p, DVec3::new(0.5, 5.0, 0.5), -DVec3::Y);
+        assert_eq!(t, vec![4.0, 5.0]);
+        assert_eq!(p.normal(DVec3::new(0.5, 1.0, 0.5)), DVec3::Y);
+        assert_eq!(p.normal(DVec3::new(0.5, 0.0, 0.5)), -DVec3::Y);
+        assert!(hits(&p, DVec3::new(2.0, 5.0, 2.0), -DVec3::Y).is_empty());
+        assert!(p.inside(DVec3::new(0.5, 0.5, 0.5)));
+        assert!(!p.inside(DVec3::new(2.0, 0.5, 2.0)));
+        assert!(!p.inside(DVec3::new(0.5, 1.5, 0.5)));
+        let b = p.bounds();
+        assert_eq!((b.min, b.max), (DVec3::ZERO, DVec3::new(4.0, 1.0, 4.0)));
+    }
+
+    #[test]
+    fn a_comb_has_more_crossings_than_four() {
+        // Six teeth along x: a ray through them crosses twelve walls.
+        let mut pts = vec![(0.0, 0.0)];
+        for k in 0..6 {
+            let x = k as f64 * 2.0;
+            pts.extend([
+                (x + 1.0, 0.0),
+                (x + 1.0, 2.0),
+                (x + 2.0, 2.0),
+                (x + 2.0, 0.0),
+            ]);
+        }
+        pts.extend([(12.0, -1.0), (0.0, -1.0), (0.0, 0.0)]);
+        let p = prism(SplineKind::Linear, &pts, false);
+        assert_eq!(hits(&p, DVec3::new(-1.0, 0.5, 1.0), DVec3::X).len(), 12);
+    }
+
+    #[test]
+    fn conic_pyramid() {
+        let sq = [
+            (-1.0, -1.0),
+            (1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, 1.0),
+            (-1.0, -1.0),
+        ];
+        let p = prism(SplineKind::Linear, &sq, true);
+        assert!(p.inside(DVec3::new(0.25, 0.5, 0.0)));
+        assert!(!p.inside(DVec3::new(0.75, 0.5, 0.0)));
+        // At y = 0.5 the section is [-0.5, 0.5]^2.
+        let t = hits(&p, DVec3::new(-5.0, 0.5, 0.0), DVec3::X);
+        assert_eq!(t.len(), 2);
+        assert!(
+            (t[0] - 4.5).abs() < 1e-12 && (t[1] - 5.5).abs() < 1e-12,
+            "{t:?}"
+        );
+        let n = p.normal(DVec3::new(-0.5, 0.5, 0.0)).normalize();
+        let want = DVec3::new(-1.0, -1.0, 0.0).normalize();
+        assert!((n - want).length() < 1e-12, "{n}");
+        // The cap at y = 1 is the profile itself.
+        let t = hits(&p, DVec3::new(0.9, 3.0, 0.9), -DVec3::Y);
+        assert_eq!(t[0], 2.0);
+        let b = p.bounds();
+        assert_eq!((b.min, b.max), (DVec3::new(-1.0, 0.0, -1.0), DVec3::ONE));
+    }
+
+    #[test]
+    fn curved_hits_lie_on_the_curve_with_perpendicular_normals() {
+        let pts = [
+            (-0.2, -1.0),
+            (0.2, -1.0),
+            (0.2, 0.2),
+            (1.0, -0.2),
+            (1.0, 0.2),
+            (0.2, 1.0),
+            (-0.2, 1.0),
+            (-1.0, 0.2),
+            (-1.0, -0.2),
+            (-0.2, 0.2),
+            (-0.2, -1.0),
+            (0.2, -1.0),
+            (0.2, 0.2),
+        ];
+        for conic in [false, true] {
+            let p = prism(SplineKind::Cubic, &pts, conic);
+            let mut found = 0;
+            for k in 0..50 {
+                let a = k as f64 * 0.37;
+                let o = DVec3::new(3.0 * a.cos(), 0.6, 3.0 * a.sin());
+                let d = DVec3::new(-a.cos() + 0.1, 0.05, -a.sin());
+                for t in hits(&p, o, d) {
+                    found += 1;
+                    let x = o + d * t;
+                    let q = p.profile_point(x);
+                    let (dist, seg, s) = p.nearest_on_profile(q);
+                    assert!(dist < 1e-9, "{conic} {k}: {dist}");
+                    let tan = tangent(&p.segments[seg.unwrap()].c, s);
+                    let n = p.normal(x);
+                    assert!(n.dot(DVec3::new(tan.x, 0.0, tan.y)).abs() < 1e-9 * n.length());
+                    // Outward: just outside along the normal, just inside against it.
+                    let step = n.normalize() * 1e-6;
+                    assert!(!p.inside(x + step) && p.inside(x - step), "{conic} {k}");
+                }
+            }
+            assert!(found > 100, "{found}");
+        }
+    }
+}
