@@ -3,6 +3,7 @@
 mod aabb;
 mod bvh;
 mod prism;
+mod profile;
 mod ray;
 mod roots;
 mod shapes;

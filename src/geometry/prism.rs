@@ -5,77 +5,30 @@
 
 use glam::{DVec2, DVec3};
 
+use super::profile::Profile;
 use super::roots::roots_in;
 use super::{Aabb, Ray};
 use crate::scene::Segment;
 use crate::scene::spline::{evaluate, tangent};
 
-/// A segment with its bounding rectangle in profile coordinates.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ProfileSegment {
-    pub c: Segment,
-    pub lo: DVec2,
-    pub hi: DVec2,
-    /// Straight (the quadratic and cubic terms are zero).
-    pub straight: bool,
-}
-
-impl ProfileSegment {
-    pub fn new(c: Segment) -> ProfileSegment {
-        let (lo, hi) = segment_bounds(&c);
-        ProfileSegment {
-            c,
-            lo,
-            hi,
-            straight: c[2] == DVec2::ZERO && c[3] == DVec2::ZERO,
-        }
-    }
-}
-
-/// The exact bounding rectangle of a segment: its ends and the turning points inside.
-fn segment_bounds(c: &Segment) -> (DVec2, DVec2) {
-    let (a, b) = (evaluate(c, 0.0), evaluate(c, 1.0));
-    let (mut lo, mut hi) = (a.min(b), a.max(b));
-    for axis in 0..2 {
-        let d = [3.0 * c[3][axis], 2.0 * c[2][axis], c[1][axis]];
-        for &s in roots_in(&d, 0.0, 1.0).as_slice() {
-            let p = evaluate(c, s);
-            lo = lo.min(p);
-            hi = hi.max(p);
-        }
-    }
-    (lo, hi)
-}
-
 #[derive(Clone, Debug, PartialEq)]
 pub struct PrismData {
-    pub segments: Vec<ProfileSegment>,
+    pub profile: Profile,
     /// The heights, lowest first.
     pub y_lo: f64,
     pub y_hi: f64,
     pub conic: bool,
     pub open: bool,
-    /// The profile's bounding rectangle.
-    pub lo: DVec2,
-    pub hi: DVec2,
 }
 
 impl PrismData {
     pub fn new(segments: &[Segment], h1: f64, h2: f64, conic: bool, open: bool) -> PrismData {
-        let segments: Vec<ProfileSegment> =
-            segments.iter().map(|&c| ProfileSegment::new(c)).collect();
-        let lo = segments.iter().fold(DVec2::INFINITY, |a, s| a.min(s.lo));
-        let hi = segments
-            .iter()
-            .fold(DVec2::NEG_INFINITY, |a, s| a.max(s.hi));
         PrismData {
-            segments,
+            profile: Profile::new(segments),
             y_lo: h1.min(h2),
             y_hi: h1.max(h2),
             conic,
             open,
-            lo,
-            hi,
         }
     }
 
@@ -83,8 +36,8 @@ impl PrismData {
         let at = |y: f64| {
             let s = if self.conic { y } else { 1.0 };
             Aabb::new(
-                DVec3::new(self.lo.x * s, y, self.lo.y * s),
-                DVec3::new(self.hi.x * s, y, self.hi.y * s),
+                DVec3::new(self.profile.lo.x * s, y, self.profile.lo.y * s),
+                DVec3::new(self.profile.hi.x * s, y, self.profile.hi.y * s),
             )
         };
         at(self.y_lo).union(&at(self.y_hi))
@@ -97,44 +50,8 @@ impl PrismData {
         if self.conic { q / p.y } else { q }
     }
 
-    /// Even-odd rule: crossings of the ray from `q` towards +u.
-    pub fn profile_contains(&self, q: DVec2) -> bool {
-        if !(q.cmpge(self.lo).all() && q.cmple(self.hi).all()) {
-            return false;
-        }
-        let mut inside = false;
-        for seg in &self.segments {
-            if q.y < seg.lo.y || q.y > seg.hi.y || q.x > seg.hi.x {
-                continue;
-            }
-            let (a, b) = (seg.c[0], evaluate(&seg.c, 1.0));
-            if seg.straight || q.x < seg.lo.x {
-                // Wholly to the right: the parity of crossings is that of the ends.
-                if (a.y > q.y) != (b.y > q.y) {
-                    let x = if seg.straight {
-                        a.x + (q.y - a.y) / (b.y - a.y) * (b.x - a.x)
-                    } else {
-                        f64::INFINITY
-                    };
-                    if q.x < x {
-                        inside = !inside;
-                    }
-                }
-                continue;
-            }
-            let c = &seg.c;
-            let poly = [c[3].y, c[2].y, c[1].y, c[0].y - q.y];
-            for &s in roots_in(&poly, 0.0, 1.0).as_slice() {
-                if s < 1.0 && evaluate(c, s).x > q.x {
-                    inside = !inside;
-                }
-            }
-        }
-        inside
-    }
-
     pub fn inside(&self, p: DVec3) -> bool {
-        p.y > self.y_lo && p.y < self.y_hi && self.profile_contains(self.profile_point(p))
+        p.y > self.y_lo && p.y < self.y_hi && self.profile.contains(self.profile_point(p))
     }
 
     /// Calls `f` with every crossing of the surface along the ray's line.
@@ -148,7 +65,7 @@ impl PrismData {
                 let t = (h - o.y) / d.y;
                 let p = o + d * t;
                 let scale = if self.conic { h } else { 1.0 };
-                if self.profile_contains(DVec2::new(p.x, p.z) / scale) {
+                if self.profile.contains(DVec2::new(p.x, p.z) / scale) {
                     f(t);
                 }
             }
@@ -169,8 +86,8 @@ impl PrismData {
         }
         // The line through the ray's footprint: n . (q - o2) = 0.
         let n = DVec2::new(d2.y, -d2.x);
-        for seg in &self.segments {
-            if !straddles(seg, |q| n.dot(q - o2)) {
+        for seg in &self.profile.segments {
+            if !seg.straddles(|q| n.dot(q - o2)) {
                 continue;
             }
             let c = &seg.c;
@@ -193,8 +110,8 @@ impl PrismData {
         if n == DVec3::ZERO {
             return;
         }
-        for seg in &self.segments {
-            if !straddles(seg, |q| n.x * q.x + n.z * q.y + n.y) {
+        for seg in &self.profile.segments {
+            if !seg.straddles(|q| n.x * q.x + n.z * q.y + n.y) {
                 continue;
             }
             let c = &seg.c;
@@ -222,7 +139,7 @@ impl PrismData {
     pub fn normal(&self, p: DVec3) -> DVec3 {
         let q = self.profile_point(p);
         let scale = if self.conic { p.y.abs() } else { 1.0 };
-        let (dist, seg, s) = self.nearest_on_profile(q);
+        let (dist, seg, s) = self.profile.nearest(q);
         if !self.open {
             let (below, above) = ((p.y - self.y_lo).abs(), (p.y - self.y_hi).abs());
             if below.min(above) < dist * scale || !q.is_finite() {
@@ -232,7 +149,7 @@ impl PrismData {
         let Some(seg) = seg else {
             return DVec3::Y;
         };
-        let c = &self.segments[seg].c;
+        let c = &self.profile.segments[seg].c;
         let t = tangent(c, s);
         let mut n = if self.conic {
             let at = evaluate(c, s);
@@ -242,58 +159,14 @@ impl PrismData {
         };
         // Outward: a step along the normal leaves the filled profile.
         let m = DVec2::new(n.x, n.z).normalize_or_zero();
-        let size = (self.hi - self.lo).max_element().max(1e-300);
+        let size = (self.profile.hi - self.profile.lo).max_element().max(1e-300);
         let step = if self.conic && p.y < 0.0 { -m } else { m };
-        if self.profile_contains(q + step * (1e-7 * size)) {
+        if self.profile.contains(q + step * (1e-7 * size)) {
             n = -n;
         }
         n
     }
 
-    /// Distance from `q` to the nearest profile curve, with its segment and parameter.
-    fn nearest_on_profile(&self, q: DVec2) -> (f64, Option<usize>, f64) {
-        let mut best = (f64::INFINITY, None, 0.0);
-        for (i, seg) in self.segments.iter().enumerate() {
-            let gap = (seg.lo - q).max(q - seg.hi).max(DVec2::ZERO).length();
-            if gap >= best.0 {
-                continue;
-            }
-            let c = &seg.c;
-            let mut consider = |s: f64| {
-                let dist = (evaluate(c, s) - q).length();
-                if dist < best.0 {
-                    best = (dist, Some(i), s);
-                }
-            };
-            consider(0.0);
-            consider(1.0);
-            for axis in 0..2 {
-                let poly = [c[3][axis], c[2][axis], c[1][axis], c[0][axis] - q[axis]];
-                for &s in roots_in(&poly, 0.0, 1.0).as_slice() {
-                    consider(s);
-                }
-            }
-        }
-        best
-    }
-}
-
-/// Whether a linear function of profile points changes sign over a segment's rectangle.
-fn straddles(seg: &ProfileSegment, g: impl Fn(DVec2) -> f64) -> bool {
-    let corners = [
-        seg.lo,
-        DVec2::new(seg.hi.x, seg.lo.y),
-        DVec2::new(seg.lo.x, seg.hi.y),
-        seg.hi,
-    ];
-    let mut pos = false;
-    let mut neg = false;
-    for c in corners {
-        let v = g(c);
-        pos |= v >= 0.0;
-        neg |= v <= 0.0;
-    }
-    pos && neg
 }
 
 #[cfg(test)]
@@ -428,9 +301,9 @@ mod tests {
                     found += 1;
                     let x = o + d * t;
                     let q = p.profile_point(x);
-                    let (dist, seg, s) = p.nearest_on_profile(q);
+                    let (dist, seg, s) = p.profile.nearest(q);
                     assert!(dist < 1e-9, "{conic} {k}: {dist}");
-                    let tan = tangent(&p.segments[seg.unwrap()].c, s);
+                    let tan = tangent(&p.profile.segments[seg.unwrap()].c, s);
                     let n = p.normal(x);
                     assert!(n.dot(DVec3::new(tan.x, 0.0, tan.y)).abs() < 1e-9 * n.length());
                     // Outward: just outside along the normal, just inside against it.

@@ -6,7 +6,7 @@ use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
-use super::prism::{PrismData, ProfileSegment};
+use super::prism::PrismData;
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
 use super::{Aabb, Ray};
 
@@ -37,9 +37,7 @@ impl ShapeTables {
             + self
                 .prisms
                 .iter()
-                .map(|p| {
-                    size_of::<PrismData>() + p.segments.capacity() * size_of::<ProfileSegment>()
-                })
+                .map(|p| size_of::<PrismData>() + p.profile.memory_bytes())
                 .sum::<usize>()
     }
 }
