@@ -5,6 +5,7 @@ mod bvh;
 mod prism;
 mod profile;
 mod ray;
+mod revolve;
 mod roots;
 mod shapes;
 mod transform;
@@ -14,6 +15,7 @@ pub use aabb::Aabb;
 pub use bvh::Bvh;
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
+pub use revolve::{LatheData, SorData};
 pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use transform::Transform;
 pub use world::{

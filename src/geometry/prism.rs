@@ -159,14 +159,15 @@ impl PrismData {
         };
         // Outward: a step along the normal leaves the filled profile.
         let m = DVec2::new(n.x, n.z).normalize_or_zero();
-        let size = (self.profile.hi - self.profile.lo).max_element().max(1e-300);
+        let size = (self.profile.hi - self.profile.lo)
+            .max_element()
+            .max(1e-300);
         let step = if self.conic && p.y < 0.0 { -m } else { m };
         if self.profile.contains(q + step * (1e-7 * size)) {
             n = -n;
         }
         n
     }
-
 }
 
 #[cfg(test)]

@@ -74,7 +74,9 @@ impl Profile {
         let segments: Vec<ProfileSegment> =
             segments.iter().map(|&c| ProfileSegment::new(c)).collect();
         let lo = segments.iter().fold(DVec2::INFINITY, |a, s| a.min(s.lo));
-        let hi = segments.iter().fold(DVec2::NEG_INFINITY, |a, s| a.max(s.hi));
+        let hi = segments
+            .iter()
+            .fold(DVec2::NEG_INFINITY, |a, s| a.max(s.hi));
         Profile { segments, lo, hi }
     }
 

@@ -7,6 +7,7 @@ use std::f64::consts::{PI, TAU};
 use glam::{DVec2, DVec3};
 
 use super::prism::PrismData;
+use super::revolve::{LatheData, SorData};
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
 use super::{Aabb, Ray};
 
@@ -20,6 +21,8 @@ pub struct ShapeTables {
     pub triangles: Vec<TriangleData>,
     pub polygons: Vec<PolygonData>,
     pub prisms: Vec<PrismData>,
+    pub sors: Vec<SorData>,
+    pub lathes: Vec<LatheData>,
 }
 
 impl ShapeTables {
@@ -38,6 +41,16 @@ impl ShapeTables {
                 .prisms
                 .iter()
                 .map(|p| size_of::<PrismData>() + p.profile.memory_bytes())
+                .sum::<usize>()
+            + self
+                .sors
+                .iter()
+                .map(|s| size_of::<SorData>() + s.pieces.capacity() * 56)
+                .sum::<usize>()
+            + self
+                .lathes
+                .iter()
+                .map(|l| size_of::<LatheData>() + l.profile.memory_bytes())
                 .sum::<usize>()
     }
 }
@@ -100,6 +113,9 @@ pub enum ShapeKind {
     /// A spline prism; it can cross a ray more often than [`Roots`] holds, so CSG reads its
     /// crossings through [`ShapeKind::each_hit`].
     Prism(u32),
+    /// Surfaces of revolution, read the same way as prisms.
+    Sor(u32),
+    Lathe(u32),
 }
 
 impl ShapeKind {
@@ -136,6 +152,8 @@ impl ShapeKind {
                 Some(Aabb::new(lo.extend(0.0), hi.extend(0.0)))
             }
             ShapeKind::Prism(i) => Some(tables.prisms[i as usize].bounds()),
+            ShapeKind::Sor(i) => Some(tables.sors[i as usize].bounds()),
+            ShapeKind::Lathe(i) => Some(tables.lathes[i as usize].bounds()),
         }
     }
 
@@ -143,9 +161,9 @@ impl ShapeKind {
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f64, tables: &ShapeTables) -> Option<f64> {
-        if let ShapeKind::Prism(i) = *self {
+        if let ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) = *self {
             let mut best = t_max;
-            tables.prisms[i as usize].each_hit(ray, |t| {
+            self.each_hit(ray, tables, |t| {
                 if t > 0.0 && t < best {
                     best = t;
                 }
@@ -165,6 +183,8 @@ impl ShapeKind {
     pub fn each_hit(&self, ray: &Ray, tables: &ShapeTables, mut f: impl FnMut(f64)) {
         match *self {
             ShapeKind::Prism(i) => tables.prisms[i as usize].each_hit(ray, f),
+            ShapeKind::Sor(i) => tables.sors[i as usize].each_hit(ray, f),
+            ShapeKind::Lathe(i) => tables.lathes[i as usize].each_hit(ray, f),
             _ => {
                 for &t in self.all_hits(ray, tables).as_slice() {
                     f(t);
@@ -233,9 +253,9 @@ impl ShapeKind {
                 }
                 r
             }
-            ShapeKind::Prism(i) => {
+            ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) => {
                 let mut r = Roots::default();
-                tables.prisms[i as usize].each_hit(ray, |t| r.push(t));
+                self.each_hit(ray, tables, |t| r.push(t));
                 r.sort();
                 r
             }
@@ -297,6 +317,8 @@ impl ShapeKind {
             }
             ShapeKind::Quartic(i) => quartic_gradient(&tables.quartics[i as usize], p),
             ShapeKind::Prism(i) => tables.prisms[i as usize].normal(p),
+            ShapeKind::Sor(i) => tables.sors[i as usize].normal(p),
+            ShapeKind::Lathe(i) => tables.lathes[i as usize].normal(p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -402,6 +424,8 @@ impl ShapeKind {
             ShapeKind::Quadric(i) => quadric_value(&tables.quadrics[i as usize], p) < 0.0,
             ShapeKind::Quartic(i) => quartic_value(&tables.quartics[i as usize], p) < 0.0,
             ShapeKind::Prism(i) => tables.prisms[i as usize].inside(p),
+            ShapeKind::Sor(i) => tables.sors[i as usize].inside(p),
+            ShapeKind::Lathe(i) => tables.lathes[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

@@ -298,6 +298,8 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Mesh(_) => "mesh",
             crate::scene::Shape::Polygon { .. } => "polygon",
             crate::scene::Shape::Prism(_) => "prism",
+            crate::scene::Shape::Sor(_) => "sor",
+            crate::scene::Shape::Lathe(_) => "lathe",
             crate::scene::Shape::Union(_) => "union",
             crate::scene::Shape::Merge(_) => "merge",
             crate::scene::Shape::Intersection(_) => "intersection",

@@ -6,8 +6,8 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    CsgOp, Item, PolygonData, PrismData, ShapeKind, Transform, TriangleData, World, WorldBuilder,
-    flags,
+    CsgOp, Item, LatheData, PolygonData, PrismData, ShapeKind, SorData, Transform, TriangleData,
+    World, WorldBuilder, flags,
 };
 use crate::scene::{
     Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere, Texture,
@@ -456,6 +456,18 @@ impl Builder {
                     ShapeKind::Prism((self.world.tables.prisms.len() - 1) as u32),
                     None,
                 )
+            }
+            Shape::Sor(ref sor) => {
+                let segments = crate::scene::sor_profile(&sor.points).ok()?;
+                let tables = &mut self.world.tables;
+                tables.sors.push(SorData::new(&segments, sor.open));
+                (ShapeKind::Sor((tables.sors.len() - 1) as u32), None)
+            }
+            Shape::Lathe(ref lathe) => {
+                let segments = crate::scene::lathe_profile(lathe.spline, &lathe.points).ok()?;
+                let tables = &mut self.world.tables;
+                tables.lathes.push(LatheData::new(&segments));
+                (ShapeKind::Lathe((tables.lathes.len() - 1) as u32), None)
             }
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }

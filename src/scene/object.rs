@@ -69,6 +69,8 @@ pub enum Shape {
         points: Vec<DVec3>,
     },
     Prism(Prism),
+    Sor(Sor),
+    Lathe(Lathe),
     Union(Vec<Object>),
     /// A union without the interior surfaces.
     Merge(Vec<Object>),
@@ -90,6 +92,23 @@ pub struct Prism {
     pub points: Vec<DVec2>,
     /// Without its caps.
     pub open: bool,
+}
+
+/// `sor { n, <r, h> ... }`: around the y axis, r^2 a cubic spline of the height through
+/// the points from the second to the last but one (see `scene::sor_profile`), closed by
+/// flat caps unless open.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sor {
+    pub points: Vec<DVec2>,
+    pub open: bool,
+}
+
+/// `lathe { spline n, <r, y> ... }`: the spline curve of the points turned around the
+/// y axis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lathe {
+    pub spline: SplineKind,
+    pub points: Vec<DVec2>,
 }
 
 #[derive(Clone, Debug, PartialEq, Default)]

@@ -51,6 +51,8 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("mesh", |ev, kw| kept(ev.mesh_items(kw)?)),
     ("polygon", |ev, kw| kept(ev.polygon_items(kw)?)),
     ("prism", |ev, kw| kept(ev.prism_items(kw)?)),
+    ("sor", |ev, _| kept(ev.sor_items()?)),
+    ("lathe", |ev, _| kept(ev.lathe_items()?)),
     ("merge", |ev, kw| {
         kept(ev.csg_children(&the(kw), Shape::Merge)?)
     }),
@@ -77,8 +79,6 @@ pub fn is_known_unsupported_shape(word: &str) -> bool {
         word,
         "blob"
             | "mesh2"
-            | "lathe"
-            | "sor"
             | "text"
             | "height_field"
             | "isosurface"
@@ -493,9 +493,10 @@ impl Evaluator<'_> {
                 match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
                     Shape::Prism(prism) => prism.open = true,
+                    Shape::Sor(sor) => sor.open = true,
                     _ => self.warn(
                         tok.span,
-                        "`open` only applies to cylinders, cones and prisms",
+                        "`open` only applies to cylinders, cones, prisms and sors",
                     ),
                 }
             }

@@ -6,7 +6,7 @@ use super::super::diagnostics::{Diagnostic, Span};
 use super::super::syntax::{Punct, Token};
 use super::Evaluator;
 use super::value::ObjectValue;
-use crate::scene::{Object, Prism, Shape, SplineKind};
+use crate::scene::{Lathe, Object, Prism, Shape, Sor, SplineKind};
 
 type R<T> = Result<T, Diagnostic>;
 
@@ -79,17 +79,36 @@ impl Evaluator<'_> {
                 "the prism's two heights are equal: it has no volume",
             );
         }
-        Ok(ObjectValue {
-            object: Some(Object::new(Shape::Prism(Prism {
-                spline,
-                conic,
-                height1,
-                height2,
-                points,
-                open: false,
-            }))),
-            lights: Vec::new(),
-        })
+        Ok(shape(Shape::Prism(Prism {
+            spline,
+            conic,
+            height1,
+            height2,
+            points,
+            open: false,
+        })))
+    }
+
+    /// `sor { n, <r, h> ... }` up to the modifiers.
+    pub(super) fn sor_items(&mut self) -> R<ObjectValue> {
+        let (points, count_span) = self.point_list("sor", 4)?;
+        crate::scene::sor_profile(&points).map_err(|m| self.err(count_span, m))?;
+        Ok(shape(Shape::Sor(Sor {
+            points,
+            open: false,
+        })))
+    }
+
+    /// `lathe { [spline] n, <r, y> ... }` up to the modifiers.
+    pub(super) fn lathe_items(&mut self) -> R<ObjectValue> {
+        let mut spline = SplineKind::Linear;
+        while let Some(k) = self.peek()?.ident().and_then(spline_keyword) {
+            spline = k;
+            self.next()?;
+        }
+        let (points, count_span) = self.point_list("lathe", 2)?;
+        crate::scene::lathe_profile(spline, &points).map_err(|m| self.err(count_span, m))?;
+        Ok(shape(Shape::Lathe(Lathe { spline, points })))
     }
 
     /// `n, <u, v>, ...`: the count, then exactly that many 2-D points (commas optional);
@@ -130,5 +149,12 @@ impl Evaluator<'_> {
             ));
         }
         Ok((points, count_span))
+    }
+}
+
+fn shape(s: Shape) -> ObjectValue {
+    ObjectValue {
+        object: Some(Object::new(s)),
+        lights: Vec::new(),
     }
 }
