@@ -278,3 +278,136 @@ fn square(p: &[f64; 4]) -> [f64; 7] {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{SplineKind, lathe_profile, sor_profile};
+
+    fn pts(p: &[(f64, f64)]) -> Vec<DVec2> {
+        p.iter().map(|&(x, y)| DVec2::new(x, y)).collect()
+    }
+
+    fn hits(each: impl Fn(&Ray, &mut dyn FnMut(f64)), o: DVec3, d: DVec3) -> Vec<f64> {
+        let mut v = Vec::new();
+        each(&Ray::new(o, d), &mut |t| v.push(t));
+        v.sort_by(f64::total_cmp);
+        v
+    }
+
+    fn close(a: &[f64], b: &[f64]) -> bool {
+        a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-9)
+    }
+
+    #[test]
+    fn sor_as_a_cylinder() {
+        let p = pts(&[(1.0, -1.0), (1.0, 0.0), (1.0, 1.0), (1.0, 2.0)]);
+        let segs = sor_profile(&p).unwrap();
+        for open in [false, true] {
+            let s = SorData::new(&segs, open);
+            let each = |r: &Ray, f: &mut dyn FnMut(f64)| s.each_hit(r, f);
+            let t = hits(each, DVec3::new(-5.0, 0.5, 0.0), DVec3::X);
+            assert!(close(&t, &[4.0, 6.0]), "{t:?}");
+            let n = s.normal(DVec3::new(-1.0, 0.5, 0.0)).normalize();
+            assert!((n + DVec3::X).length() < 1e-12, "{n}");
+            let t = hits(each, DVec3::new(0.3, 5.0, 0.0), -DVec3::Y);
+            if open {
+                assert!(t.is_empty());
+            } else {
+                assert!(close(&t, &[4.0, 5.0]), "{t:?}");
+                assert_eq!(s.normal(DVec3::new(0.3, 1.0, 0.0)), DVec3::Y);
+            }
+            assert!(s.inside(DVec3::new(0.0, 0.5, 0.0)));
+            assert!(!s.inside(DVec3::new(0.0, 1.5, 0.0)));
+            let b = s.bounds();
+            assert_eq!((b.min, b.max), (DVec3::new(-1.0, 0.0, -1.0), DVec3::ONE));
+        }
+    }
+
+    #[test]
+    fn sor_hits_lie_on_the_surface() {
+        let p = pts(&[
+            (0.2, -0.3),
+            (0.5, 0.1),
+            (0.9, 0.6),
+            (0.3, 1.2),
+            (0.6, 1.8),
+            (1.0, 2.5),
+        ]);
+        let s = SorData::new(&sor_profile(&p).unwrap(), false);
+        let mut found = 0;
+        for k in 0..60 {
+            let a = k as f64 * 0.41;
+            let o = DVec3::new(4.0 * a.cos(), 0.9 + 0.3 * a.sin(), 40.0 * a.sin());
+            let d = DVec3::new(0.0, 1.0 - 0.05 * k as f64 * 0.6, 0.0) - o;
+            for t in hits(|r, f| s.each_hit(r, f), o, d) {
+                found += 1;
+                let x = o + d * t;
+                let on_side = s.piece_at(x.y).seg.radius_squared(x.y) - (x.x * x.x + x.z * x.z);
+                let on_cap = (x.y - s.y_lo).abs().min((x.y - s.y_hi).abs());
+                assert!(
+                    on_side.abs() < 1e-9 || on_cap < 1e-9,
+                    "{k}: {on_side} {on_cap}"
+                );
+                let step = s.normal(x).normalize() * 1e-6;
+                assert!(!s.inside(x + step) && s.inside(x - step), "{k}");
+            }
+        }
+        assert!(found > 40, "{found}");
+    }
+
+    #[test]
+    fn lathe_ring_with_a_square_section() {
+        let p = pts(&[(0.5, 0.0), (0.8, 0.0), (0.8, 0.4), (0.5, 0.4), (0.5, 0.0)]);
+        let l = LatheData::new(&lathe_profile(SplineKind::Linear, &p).unwrap());
+        let each = |r: &Ray, f: &mut dyn FnMut(f64)| l.each_hit(r, f);
+        // Horizontal, and slightly tilted through the same points.
+        let t = hits(each, DVec3::new(-5.0, 0.2, 0.0), DVec3::X);
+        assert!(close(&t, &[4.2, 4.5, 5.5, 5.8]), "{t:?}");
+        let t = hits(each, DVec3::new(-5.0, 0.1, 0.0), DVec3::new(1.0, 0.02, 0.0));
+        assert!(close(&t, &[4.2, 4.5, 5.5, 5.8]), "{t:?}");
+        let n = l.normal(DVec3::new(-0.8, 0.2, 0.0)).normalize();
+        assert!((n + DVec3::X).length() < 1e-12, "{n}");
+        let n = l.normal(DVec3::new(-0.5, 0.2, 0.0)).normalize();
+        assert!((n - DVec3::X).length() < 1e-12, "faces the hole: {n}");
+        let t = hits(each, DVec3::new(0.0, 5.0, 0.65), -DVec3::Y);
+        assert!(close(&t, &[4.6, 5.0]), "{t:?}");
+        assert!((l.normal(DVec3::new(0.0, 0.4, 0.65)).normalize() - DVec3::Y).length() < 1e-12);
+        assert!(l.inside(DVec3::new(0.0, 0.2, -0.65)));
+        assert!(!l.inside(DVec3::new(0.0, 0.2, 0.0)));
+        let b = l.bounds();
+        assert_eq!(b.min, DVec3::new(-0.8, 0.0, -0.8));
+        assert_eq!(b.max, DVec3::new(0.8, 0.4, 0.8));
+    }
+
+    #[test]
+    fn curved_lathe_hits_lie_on_the_curve() {
+        let p = pts(&[
+            (0.1, -0.2),
+            (0.2, 0.0),
+            (0.5, 0.4),
+            (0.2, 0.8),
+            (0.2, 0.0),
+            (0.5, 0.4),
+        ]);
+        for kind in [SplineKind::Quadratic, SplineKind::Cubic] {
+            let l = LatheData::new(&lathe_profile(kind, &p).unwrap());
+            let mut found = 0;
+            for k in 0..60 {
+                let a = k as f64 * 0.37;
+                let o = DVec3::new(3.0 * a.cos(), 0.4 + a.sin(), 3.0 * a.sin());
+                let mut d = DVec3::new(0.1 * a.sin(), 0.3, 0.0) - o;
+                if k % 10 == 0 {
+                    d.y = 0.0;
+                }
+                for t in hits(|r, f| l.each_hit(r, f), o, d) {
+                    found += 1;
+                    let x = o + d * t;
+                    let (dist, _, _) = l.profile.nearest(DVec2::new(x.x.hypot(x.z), x.y));
+                    assert!(dist < 1e-8, "{kind:?} {k}: {dist}");
+                }
+            }
+            assert!(found > 100, "{found}");
+        }
+    }
+}
