@@ -41,7 +41,7 @@ impl AxisDistance {
         let t = if self.a > 0.0 {
             (-self.b / (2.0 * self.a)).clamp(t0, t1)
         } else {
-            t0.max(-1e300).min(1e300)
+            t0.clamp(-1e300, 1e300)
         };
         let nearest = (self.a * t + self.b) * t + self.c;
         (nearest <= r * r * (1.0 + 1e-9)).then_some((t0, t1))

@@ -443,32 +443,7 @@ impl Builder {
                     Some(frame),
                 )
             }
-            Shape::Prism(ref prism) => {
-                let profile = crate::scene::prism_profile(prism.spline, &prism.points).ok()?;
-                self.world.tables.prisms.push(PrismData::new(
-                    &profile.segments,
-                    prism.height1,
-                    prism.height2,
-                    prism.conic,
-                    prism.open,
-                ));
-                (
-                    ShapeKind::Prism((self.world.tables.prisms.len() - 1) as u32),
-                    None,
-                )
-            }
-            Shape::Sor(ref sor) => {
-                let segments = crate::scene::sor_profile(&sor.points).ok()?;
-                let tables = &mut self.world.tables;
-                tables.sors.push(SorData::new(&segments, sor.open));
-                (ShapeKind::Sor((tables.sors.len() - 1) as u32), None)
-            }
-            Shape::Lathe(ref lathe) => {
-                let segments = crate::scene::lathe_profile(lathe.spline, &lathe.points).ok()?;
-                let tables = &mut self.world.tables;
-                tables.lathes.push(LatheData::new(&segments));
-                (ShapeKind::Lathe((tables.lathes.len() - 1) as u32), None)
-            }
+            Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
             | Shape::Mesh(_)
@@ -476,6 +451,35 @@ impl Builder {
             | Shape::Merge(_)
             | Shape::Intersection(_)
             | Shape::Difference(_) => return None,
+        })
+    }
+    /// The table entry of a prism, sor or lathe (`None` for other shapes, or for points
+    /// that make no shape).
+    fn spline_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
+        let tables = &mut self.world.tables;
+        Some(match shape {
+            Shape::Prism(prism) => {
+                let profile = crate::scene::prism_profile(prism.spline, &prism.points).ok()?;
+                tables.prisms.push(PrismData::new(
+                    &profile.segments,
+                    prism.height1,
+                    prism.height2,
+                    prism.conic,
+                    prism.open,
+                ));
+                ShapeKind::Prism((tables.prisms.len() - 1) as u32)
+            }
+            Shape::Sor(sor) => {
+                let segments = crate::scene::sor_profile(&sor.points).ok()?;
+                tables.sors.push(SorData::new(&segments, sor.open));
+                ShapeKind::Sor((tables.sors.len() - 1) as u32)
+            }
+            Shape::Lathe(lathe) => {
+                let segments = crate::scene::lathe_profile(lathe.spline, &lathe.points).ok()?;
+                tables.lathes.push(LatheData::new(&segments));
+                ShapeKind::Lathe((tables.lathes.len() - 1) as u32)
+            }
+            _ => return None,
         })
     }
 }
