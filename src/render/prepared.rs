@@ -453,6 +453,7 @@ impl Builder {
             | Shape::Difference(_) => return None,
         })
     }
+
     /// The table entry of a prism, sor or lathe (`None` for other shapes, or for points
     /// that make no shape).
     fn spline_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
