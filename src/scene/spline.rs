@@ -224,13 +224,16 @@ impl SorSegment {
 /// the second to the last but one, through their r^2, with slope 2 r dr/dh at each point,
 /// dr/dh taken from its two neighbours (measured with povray: an orthographic silhouette
 /// matched to half a pixel, where slopes from the neighbours' r^2 missed by six pixels).
-/// The heights must increase.
+/// The heights must increase (a control point may share its neighbour's).
 pub fn sor_profile(p: &[DVec2]) -> Result<Vec<SorSegment>, String> {
     let n = p.len();
     if n < 4 {
         return Err(format!("a sor needs at least four points, found {n}"));
     }
-    if let Some(i) = (1..n).find(|&i| p[i].y <= p[i - 1].y) {
+    // As povray: no height may fall, and the heights the curve joins must rise (the
+    // control points may repeat their neighbours' heights).
+    let falls = |i: usize| p[i].y < p[i - 1].y || (i > 1 && i < n - 1 && p[i].y == p[i - 1].y);
+    if let Some(i) = (1..n).find(|&i| falls(i)) {
         return Err(format!(
             "the sor's heights must increase, but point {} is at {} after {}",
             i + 1,
@@ -301,6 +304,9 @@ mod tests {
         assert!((s[0].slope(0.6) - m).abs() < 1e-12 && (s[1].slope(0.6) - m).abs() < 1e-12);
         assert!(sor_profile(&p[..3]).is_err());
         assert!(sor_profile(&[v(1.0, 0.0), v(1.0, 1.0), v(1.0, 1.0), v(1.0, 2.0)]).is_err());
+        assert!(sor_profile(&[v(1.0, 1.0), v(1.0, 0.0), v(1.0, 1.0), v(1.0, 2.0)]).is_err());
+        // povray's sor1.pov: the first control point at the height of the second.
+        assert!(sor_profile(&[v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1.0), v(1.0, 2.0)]).is_ok());
     }
 
     #[test]

@@ -114,7 +114,9 @@ impl Evaluator<'_> {
     /// `n, <u, v>, ...`: the count, then exactly that many 2-D points (commas optional);
     /// the span of the count for errors about the points.
     pub(super) fn point_list(&mut self, what: &str, least: usize) -> R<(Vec<DVec2>, Span)> {
-        let (v, count_span) = self.expr()?;
+        // Additive, not a full expression: in `4 <-1, 0>` the `<` opens the first point (as
+        // in povray's interior/atten2.pov), it is not a comparison.
+        let (v, count_span) = self.additive()?;
         let n = self.to_float(&v, count_span)?;
         if n.fract() != 0.0 || n < least as f64 || n > 1e7 {
             return Err(self.err(
@@ -136,7 +138,7 @@ impl Evaluator<'_> {
                     format!("the {what} declares {n} points but gives {i}"),
                 ));
             }
-            let (v, s) = self.expr()?;
+            let (v, s) = self.additive()?;
             let p = self.to_vec3(&v, s)?;
             points.push(DVec2::new(p.x, p.y));
         }
