@@ -2,7 +2,10 @@
 
 mod aabb;
 mod bvh;
+mod prism;
+mod profile;
 mod ray;
+mod revolve;
 mod roots;
 mod shapes;
 mod transform;
@@ -10,7 +13,9 @@ mod world;
 
 pub use aabb::Aabb;
 pub use bvh::Bvh;
+pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
+pub use revolve::{LatheData, SorData};
 pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use transform::Transform;
 pub use world::{

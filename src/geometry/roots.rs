@@ -112,6 +112,65 @@ pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
     out
 }
 
+/// Up to six roots, sorted, without allocation (for the degree-6 polynomials of lathes).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WideRoots {
+    pub values: [f64; 6],
+    pub len: usize,
+}
+
+impl WideRoots {
+    fn push(&mut self, t: f64) {
+        if self.len < 6 {
+            self.values[self.len] = t;
+            self.len += 1;
+        }
+    }
+
+    pub fn as_slice(&self) -> &[f64] {
+        &self.values[..self.len]
+    }
+}
+
+/// Roots in [lo, hi] (finite) of a polynomial of degree at most 6, highest degree first,
+/// found as [`roots_in`] finds them: between the roots of the derivative, each interval
+/// monotone.
+pub fn roots_in_wide(coef: &[f64], lo: f64, hi: f64) -> WideRoots {
+    let start = coef.iter().position(|&c| c != 0.0).unwrap_or(coef.len());
+    let coef = &coef[start..];
+    let degree = coef.len().saturating_sub(1);
+    let mut out = WideRoots::default();
+    if degree <= 4 {
+        for &t in roots_in(coef, lo, hi).as_slice() {
+            out.push(t);
+        }
+        return out;
+    }
+    let mut derivative = [0.0; 6];
+    for (i, c) in coef[..degree].iter().enumerate() {
+        derivative[i] = c * (degree - i) as f64;
+    }
+    let critical = roots_in_wide(&derivative[..degree], lo, hi);
+    let mut bounds = [lo; 8];
+    let mut n = 1;
+    for &c in critical.as_slice() {
+        if c > bounds[n - 1] {
+            bounds[n] = c;
+            n += 1;
+        }
+    }
+    bounds[n] = hi;
+    n += 1;
+    for w in bounds[..n].windows(2) {
+        if let Some(t) = monotone_root(coef, w[0], w[1])
+            && (out.len == 0 || (t - out.values[out.len - 1]).abs() > 1e-12 * t.abs().max(1.0))
+        {
+            out.push(t);
+        }
+    }
+    out
+}
+
 /// The root of a polynomial that is monotone on [a, b], if its sign changes there.
 fn monotone_root(coef: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
     let mut fa = eval(coef, a);
@@ -178,6 +237,18 @@ mod tests {
         assert_eq!(r.len, 2, "{r:?}");
         assert!((r.values[0] - 1.0).abs() < 1e-9 && (r.values[1] - 1.001).abs() < 1e-9);
         assert_eq!(roots_in(&p, 2.0, 5.0).len, 0);
+    }
+
+    #[test]
+    fn sextic_with_six_roots() {
+        // (t - 1)(t - 2)...(t - 6), expanded.
+        let p = [1.0, -21.0, 175.0, -735.0, 1624.0, -1764.0, 720.0];
+        let r = roots_in_wide(&p, 0.0, 10.0);
+        assert_eq!(r.len, 6, "{r:?}");
+        for (got, want) in r.as_slice().iter().zip(1..=6) {
+            assert!((got - want as f64).abs() < 1e-9, "{got} vs {want}");
+        }
+        assert_eq!(roots_in_wide(&p, 2.5, 4.5).len, 2);
     }
 
     #[test]

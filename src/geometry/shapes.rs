@@ -6,6 +6,8 @@ use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
+use super::prism::PrismData;
+use super::revolve::{LatheData, SorData};
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
 use super::{Aabb, Ray};
 
@@ -18,6 +20,9 @@ pub struct ShapeTables {
     pub quartics: Vec<[f64; 35]>,
     pub triangles: Vec<TriangleData>,
     pub polygons: Vec<PolygonData>,
+    pub prisms: Vec<PrismData>,
+    pub sors: Vec<SorData>,
+    pub lathes: Vec<LatheData>,
 }
 
 impl ShapeTables {
@@ -31,6 +36,21 @@ impl ShapeTables {
                 .polygons
                 .iter()
                 .map(|p| p.points.capacity() * 16 + p.loops.capacity() * 16)
+                .sum::<usize>()
+            + self
+                .prisms
+                .iter()
+                .map(|p| size_of::<PrismData>() + p.profile.memory_bytes())
+                .sum::<usize>()
+            + self
+                .sors
+                .iter()
+                .map(|s| size_of::<SorData>() + s.pieces.capacity() * 56)
+                .sum::<usize>()
+            + self
+                .lathes
+                .iter()
+                .map(|l| size_of::<LatheData>() + l.profile.memory_bytes())
                 .sum::<usize>()
     }
 }
@@ -90,6 +110,12 @@ pub enum ShapeKind {
     Quartic(u32),
     Triangle(u32),
     Polygon(u32),
+    /// A spline prism; it can cross a ray more often than [`Roots`] holds, so CSG reads its
+    /// crossings through [`ShapeKind::each_hit`].
+    Prism(u32),
+    /// Surfaces of revolution, read the same way as prisms.
+    Sor(u32),
+    Lathe(u32),
 }
 
 impl ShapeKind {
@@ -125,6 +151,9 @@ impl ShapeKind {
                 let (lo, hi) = tables.polygons[i as usize].bounds;
                 Some(Aabb::new(lo.extend(0.0), hi.extend(0.0)))
             }
+            ShapeKind::Prism(i) => Some(tables.prisms[i as usize].bounds()),
+            ShapeKind::Sor(i) => Some(tables.sors[i as usize].bounds()),
+            ShapeKind::Lathe(i) => Some(tables.lathes[i as usize].bounds()),
         }
     }
 
@@ -132,6 +161,15 @@ impl ShapeKind {
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f64, tables: &ShapeTables) -> Option<f64> {
+        if let ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) = *self {
+            let mut best = t_max;
+            self.each_hit(ray, tables, |t| {
+                if t > 0.0 && t < best {
+                    best = t;
+                }
+            });
+            return (best < t_max).then_some(best);
+        }
         let hits = self.all_hits(ray, tables);
         hits.as_slice()
             .iter()
@@ -139,7 +177,24 @@ impl ShapeKind {
             .find(|&t| t > 0.0 && t < t_max)
     }
 
-    /// Every crossing of the surface along the whole line, sorted; CSG needs them all.
+    /// Calls `f` with every crossing of the surface along the whole line, in no particular
+    /// order; CSG needs them all.
+    #[inline]
+    pub fn each_hit(&self, ray: &Ray, tables: &ShapeTables, mut f: impl FnMut(f64)) {
+        match *self {
+            ShapeKind::Prism(i) => tables.prisms[i as usize].each_hit(ray, f),
+            ShapeKind::Sor(i) => tables.sors[i as usize].each_hit(ray, f),
+            ShapeKind::Lathe(i) => tables.lathes[i as usize].each_hit(ray, f),
+            _ => {
+                for &t in self.all_hits(ray, tables).as_slice() {
+                    f(t);
+                }
+            }
+        }
+    }
+
+    /// The crossings of the surface along the whole line, sorted, for shapes with at most
+    /// four (a prism gives its first four found; use [`ShapeKind::each_hit`]).
     pub fn all_hits(&self, ray: &Ray, tables: &ShapeTables) -> Roots {
         match *self {
             ShapeKind::Sphere { center, radius } => sphere_roots(ray, center, radius),
@@ -196,6 +251,12 @@ impl ShapeKind {
                         r.push(t);
                     }
                 }
+                r
+            }
+            ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) => {
+                let mut r = Roots::default();
+                self.each_hit(ray, tables, |t| r.push(t));
+                r.sort();
                 r
             }
         }
@@ -255,6 +316,9 @@ impl ShapeKind {
                 )
             }
             ShapeKind::Quartic(i) => quartic_gradient(&tables.quartics[i as usize], p),
+            ShapeKind::Prism(i) => tables.prisms[i as usize].normal(p),
+            ShapeKind::Sor(i) => tables.sors[i as usize].normal(p),
+            ShapeKind::Lathe(i) => tables.lathes[i as usize].normal(p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -359,6 +423,9 @@ impl ShapeKind {
             }
             ShapeKind::Quadric(i) => quadric_value(&tables.quadrics[i as usize], p) < 0.0,
             ShapeKind::Quartic(i) => quartic_value(&tables.quartics[i as usize], p) < 0.0,
+            ShapeKind::Prism(i) => tables.prisms[i as usize].inside(p),
+            ShapeKind::Sor(i) => tables.sors[i as usize].inside(p),
+            ShapeKind::Lathe(i) => tables.lathes[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

@@ -6,7 +6,8 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    CsgOp, Item, PolygonData, ShapeKind, Transform, TriangleData, World, WorldBuilder, flags,
+    CsgOp, Item, LatheData, PolygonData, PrismData, ShapeKind, SorData, Transform, TriangleData,
+    World, WorldBuilder, flags,
 };
 use crate::scene::{
     Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere, Texture,
@@ -446,6 +447,7 @@ impl Builder {
                     Some(frame),
                 )
             }
+            Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
             | Shape::Mesh(_)
@@ -453,6 +455,36 @@ impl Builder {
             | Shape::Merge(_)
             | Shape::Intersection(_)
             | Shape::Difference(_) => return None,
+        })
+    }
+
+    /// The table entry of a prism, sor or lathe (`None` for other shapes, or for points
+    /// that make no shape).
+    fn spline_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
+        let tables = &mut self.world.tables;
+        Some(match shape {
+            Shape::Prism(prism) => {
+                let profile = crate::scene::prism_profile(prism.spline, &prism.points).ok()?;
+                tables.prisms.push(PrismData::new(
+                    &profile.segments,
+                    prism.height1,
+                    prism.height2,
+                    prism.conic,
+                    prism.open,
+                ));
+                ShapeKind::Prism((tables.prisms.len() - 1) as u32)
+            }
+            Shape::Sor(sor) => {
+                let segments = crate::scene::sor_profile(&sor.points).ok()?;
+                tables.sors.push(SorData::new(&segments, sor.open));
+                ShapeKind::Sor((tables.sors.len() - 1) as u32)
+            }
+            Shape::Lathe(lathe) => {
+                let segments = crate::scene::lathe_profile(lathe.spline, &lathe.points).ok()?;
+                tables.lathes.push(LatheData::new(&segments));
+                ShapeKind::Lathe((tables.lathes.len() - 1) as u32)
+            }
+            _ => return None,
         })
     }
 }

@@ -91,7 +91,10 @@ impl CameraSpec {
             let r = r.normalize_or(DVec3::X);
             let u = d.cross(r);
             direction = d * dl;
-            right = r * if handedness < 0.0 { -rl } else { rl };
+            // A degenerate triple (`up z` with the default direction z) counts as
+            // right-handed, as measured with povray: objects/prism3a.pov's camera and an
+            // orthographic `up z` view from above both come out mirrored.
+            right = r * if handedness <= 0.0 { -rl } else { rl };
             up = u * ul;
         }
         if self.orthographic && (self.angle.is_some() || !self.up_or_right_given) {

@@ -8,13 +8,17 @@ mod fog;
 mod light;
 mod media;
 mod object;
+pub mod spline;
 mod texture;
 
 pub use camera::{Camera, CameraSpec};
 pub use fog::{Fog, FogKind, FogTurbulence};
 pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
-pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
+pub use object::{Lathe, Mesh, MeshTriangle, Object, ObjectFlags, Prism, Shape, Sor};
+pub use spline::{
+    PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
+};
 pub use texture::{
     Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
     PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,

@@ -1,8 +1,8 @@
 use std::sync::Arc;
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
-use super::{Interior, Texture, Transform};
+use super::{Interior, SplineKind, Texture, Transform};
 
 /// The shapes a scene can hold, in the scene's own terms (POV-Ray's parameters). CSG
 /// shapes own their children.
@@ -68,12 +68,47 @@ pub enum Shape {
     Polygon {
         points: Vec<DVec3>,
     },
+    Prism(Prism),
+    Sor(Sor),
+    Lathe(Lathe),
     Union(Vec<Object>),
     /// A union without the interior surfaces.
     Merge(Vec<Object>),
     Intersection(Vec<Object>),
     /// The first child minus all the others.
     Difference(Vec<Object>),
+}
+
+/// `prism { sweep spline height1, height2, n, points }`: closed 2-D shapes in the x-z plane
+/// (each point is <x, z>) filled by the even-odd rule and swept along y between the
+/// heights. A conic sweep scales the shape by y towards the origin: the points give it at
+/// y = 1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Prism {
+    pub spline: SplineKind,
+    pub conic: bool,
+    pub height1: f64,
+    pub height2: f64,
+    pub points: Vec<DVec2>,
+    /// Without its caps.
+    pub open: bool,
+}
+
+/// `sor { n, <r, h> ... }`: around the y axis, r^2 a cubic spline of the height through
+/// the points from the second to the last but one (see `scene::sor_profile`), closed by
+/// flat caps unless open.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sor {
+    pub points: Vec<DVec2>,
+    pub open: bool,
+}
+
+/// `lathe { spline n, <r, y> ... }`: the spline curve of the points turned around the
+/// y axis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lathe {
+    pub spline: SplineKind,
+    pub points: Vec<DVec2>,
 }
 
 #[derive(Clone, Debug, PartialEq, Default)]

@@ -75,6 +75,68 @@ fn sphere_world(n: usize) -> (World, f64) {
     (world, start.elapsed().as_secs_f64())
 }
 
+/// One shape filling the view (about the unit cube the sphere worlds fill), for the
+/// per-shape lines: a sphere to compare with, then the spline shapes.
+fn shape_world(name: &str) -> World {
+    use crate::geometry::{LatheData, PrismData, SorData};
+    use crate::scene::{SplineKind, lathe_profile, prism_profile, sor_profile};
+    let v = |p: &[(f64, f64)]| -> Vec<glam::DVec2> {
+        p.iter().map(|&(x, y)| glam::DVec2::new(x, y)).collect()
+    };
+    let mut b = WorldBuilder::default();
+    let star = v(&[
+        (-0.2, -1.0),
+        (0.2, -1.0),
+        (0.2, 0.2),
+        (1.0, -0.2),
+        (1.0, 0.2),
+        (0.2, 1.0),
+        (-0.2, 1.0),
+        (-1.0, 0.2),
+        (-1.0, -0.2),
+        (-0.2, 0.2),
+        (-0.2, -1.0),
+        (0.2, -1.0),
+        (0.2, 0.2),
+    ]);
+    let vase = v(&[
+        (0.2, -1.3),
+        (0.5, -1.0),
+        (0.9, -0.4),
+        (0.3, 0.2),
+        (0.6, 0.8),
+        (1.0, 1.5),
+    ]);
+    let shape = match name {
+        "prism" => {
+            let segments = prism_profile(SplineKind::Cubic, &star).expect("a closed star");
+            let data = PrismData::new(&segments.segments, -0.5, 0.5, false, false);
+            b.tables.prisms.push(data);
+            ShapeKind::Prism(0)
+        }
+        "sor" => {
+            b.tables
+                .sors
+                .push(SorData::new(&sor_profile(&vase).expect("rising"), false));
+            ShapeKind::Sor(0)
+        }
+        "lathe" => {
+            let segments = lathe_profile(SplineKind::Cubic, &vase).expect("enough points");
+            b.tables.lathes.push(LatheData::new(&segments));
+            ShapeKind::Lathe(0)
+        }
+        _ => ShapeKind::Sphere {
+            center: DVec3::ZERO,
+            radius: 1.0,
+        },
+    };
+    // Tilted towards the camera so that caps and sides both show.
+    let tilt = Transform::rotate(DVec3::new(-60.0, 20.0, 0.0));
+    let item = b.primitive(shape, &tilt, 0, 0);
+    b.add_top(item);
+    b.build()
+}
+
 struct RayFigures {
     camera_rate: f64,
     shadow_rate: f64,
@@ -263,6 +325,15 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
             last.0,
             last.1 / first.1,
             last.2 / first.2
+        ));
+    }
+    for name in ["sphere", "prism", "sor", "lathe"] {
+        let figures = trace(&shape_world(name), options.rays);
+        line(format!(
+            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe)",
+            figures.camera_rate,
+            figures.shadow_rate,
+            100.0 * figures.hit_fraction,
         ));
     }
     if options.povray_counts.is_empty() {

@@ -21,6 +21,7 @@ mod keywords;
 mod media;
 mod objects;
 mod stream;
+mod sweeps;
 mod texture;
 pub mod value;
 

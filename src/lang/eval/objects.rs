@@ -50,6 +50,9 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("smooth_triangle", |ev, kw| ev.triangle(kw, true)),
     ("mesh", |ev, kw| kept(ev.mesh_items(kw)?)),
     ("polygon", |ev, kw| kept(ev.polygon_items(kw)?)),
+    ("prism", |ev, kw| kept(ev.prism_items(kw)?)),
+    ("sor", |ev, _| kept(ev.sor_items()?)),
+    ("lathe", |ev, _| kept(ev.lathe_items()?)),
     ("merge", |ev, kw| {
         kept(ev.csg_children(&the(kw), Shape::Merge)?)
     }),
@@ -76,9 +79,6 @@ pub fn is_known_unsupported_shape(word: &str) -> bool {
         word,
         "blob"
             | "mesh2"
-            | "lathe"
-            | "sor"
-            | "prism"
             | "text"
             | "height_field"
             | "isosurface"
@@ -492,7 +492,12 @@ impl Evaluator<'_> {
                 self.next()?;
                 match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
-                    _ => self.warn(tok.span, "`open` only applies to cylinders and cones"),
+                    Shape::Prism(prism) => prism.open = true,
+                    Shape::Sor(sor) => sor.open = true,
+                    _ => self.warn(
+                        tok.span,
+                        "`open` only applies to cylinders, cones, prisms and sors",
+                    ),
                 }
             }
             // Root solving is exact enough in penumbra without `sturm`.
