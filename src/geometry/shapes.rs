@@ -6,7 +6,9 @@ use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
+use super::blob::BlobData;
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
+use super::superellipsoid::Superellipsoid;
 use super::{Aabb, Ray};
 
 /// Data too large to sit inside [`ShapeKind`].
@@ -18,6 +20,7 @@ pub struct ShapeTables {
     pub quartics: Vec<[f64; 35]>,
     pub triangles: Vec<TriangleData>,
     pub polygons: Vec<PolygonData>,
+    pub blobs: Vec<BlobData>,
 }
 
 impl ShapeTables {
@@ -31,6 +34,13 @@ impl ShapeTables {
                 .polygons
                 .iter()
                 .map(|p| p.points.capacity() * 16 + p.loops.capacity() * 16)
+                .sum::<usize>()
+            + self
+                .blobs
+                .iter()
+                .map(|b| {
+                    size_of::<BlobData>() + b.parts.capacity() * size_of::<super::blob::BlobPart>()
+                })
                 .sum::<usize>()
     }
 }
@@ -90,6 +100,11 @@ pub enum ShapeKind {
     Quartic(u32),
     Triangle(u32),
     Polygon(u32),
+    /// It can cross a ray more often than [`Roots`] holds (the pinched ones), so CSG reads
+    /// its crossings through [`ShapeKind::each_hit`].
+    Superellipsoid(Superellipsoid),
+    /// Read the same way as superellipsoids.
+    Blob(u32),
 }
 
 impl ShapeKind {
@@ -125,6 +140,8 @@ impl ShapeKind {
                 let (lo, hi) = tables.polygons[i as usize].bounds;
                 Some(Aabb::new(lo.extend(0.0), hi.extend(0.0)))
             }
+            ShapeKind::Superellipsoid(s) => Some(s.bounds()),
+            ShapeKind::Blob(i) => Some(tables.blobs[i as usize].bounds),
         }
     }
 
@@ -132,6 +149,18 @@ impl ShapeKind {
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f64, tables: &ShapeTables) -> Option<f64> {
+        if let ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) = *self {
+            // Crossings come in increasing order: stop at the first ahead of the origin.
+            let mut found = None;
+            self.crossings(ray, tables, |t| {
+                if t > 0.0 {
+                    found = (t < t_max).then_some(t);
+                    return false;
+                }
+                true
+            });
+            return found;
+        }
         let hits = self.all_hits(ray, tables);
         hits.as_slice()
             .iter()
@@ -139,7 +168,36 @@ impl ShapeKind {
             .find(|&t| t > 0.0 && t < t_max)
     }
 
-    /// Every crossing of the surface along the whole line, sorted; CSG needs them all.
+    /// Calls `f` with every crossing of the surface along the whole line, in no particular
+    /// order; CSG needs them all.
+    #[inline]
+    pub fn each_hit(&self, ray: &Ray, tables: &ShapeTables, mut f: impl FnMut(f64)) {
+        match *self {
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+                self.crossings(ray, tables, |t| {
+                    f(t);
+                    true
+                });
+            }
+            _ => {
+                for &t in self.all_hits(ray, tables).as_slice() {
+                    f(t);
+                }
+            }
+        }
+    }
+
+    /// The crossings of shapes that find them in increasing order, until `f` says stop.
+    fn crossings(&self, ray: &Ray, tables: &ShapeTables, f: impl FnMut(f64) -> bool) {
+        match *self {
+            ShapeKind::Superellipsoid(s) => s.each_hit(ray, f),
+            ShapeKind::Blob(i) => tables.blobs[i as usize].each_hit(ray, f),
+            _ => {}
+        }
+    }
+
+    /// The crossings of the surface along the whole line, sorted, for shapes with at most
+    /// four (a blob or superellipsoid gives its first four; use [`ShapeKind::each_hit`]).
     pub fn all_hits(&self, ray: &Ray, tables: &ShapeTables) -> Roots {
         match *self {
             ShapeKind::Sphere { center, radius } => sphere_roots(ray, center, radius),
@@ -196,6 +254,11 @@ impl ShapeKind {
                         r.push(t);
                     }
                 }
+                r
+            }
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+                let mut r = Roots::default();
+                self.each_hit(ray, tables, |t| r.push(t));
                 r
             }
         }
@@ -255,6 +318,8 @@ impl ShapeKind {
                 )
             }
             ShapeKind::Quartic(i) => quartic_gradient(&tables.quartics[i as usize], p),
+            ShapeKind::Superellipsoid(s) => s.gradient(p),
+            ShapeKind::Blob(i) => tables.blobs[i as usize].normal(p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -359,6 +424,8 @@ impl ShapeKind {
             }
             ShapeKind::Quadric(i) => quadric_value(&tables.quadrics[i as usize], p) < 0.0,
             ShapeKind::Quartic(i) => quartic_value(&tables.quartics[i as usize], p) < 0.0,
+            ShapeKind::Superellipsoid(s) => s.inside(p),
+            ShapeKind::Blob(i) => tables.blobs[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

@@ -373,16 +373,17 @@ impl World {
             if p.flags & skip != 0 {
                 return;
             }
-            let hits = p.shape.all_hits(&self.local_ray(p, ray), &self.tables);
-            for &t in hits.as_slice() {
-                if t > 0.0 && t < t_max {
-                    f(Hit {
-                        t,
-                        primitive: item,
-                        flipped: p.flags & flags::INVERSE != 0,
-                    });
-                }
-            }
+            let flipped = p.flags & flags::INVERSE != 0;
+            p.shape
+                .each_hit(&self.local_ray(p, ray), &self.tables, |t| {
+                    if t > 0.0 && t < t_max {
+                        f(Hit {
+                            t,
+                            primitive: item,
+                            flipped,
+                        });
+                    }
+                });
             return;
         }
         let node = &self.csg[(item & !CSG_BIT) as usize];

@@ -14,7 +14,9 @@ pub use camera::{Camera, CameraSpec};
 pub use fog::{Fog, FogKind, FogTurbulence};
 pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
-pub use object::{Mesh, MeshTriangle, Object, ObjectFlags, Shape};
+pub use object::{
+    Blob, BlobComponent, BlobComponentKind, Mesh, MeshTriangle, Object, ObjectFlags, Shape,
+};
 pub use texture::{
     Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
     PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
