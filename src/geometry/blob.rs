@@ -40,9 +40,12 @@ struct Piece {
     coef: [f64; 5],
 }
 
+/// The pieces along a ray, and their ends as (t, piece * 2 + 1 if it ends there).
+type Scratch = (Vec<Piece>, Vec<(f64, u32)>);
+
 thread_local! {
     /// Per-thread buffers, taken and put back, so rays allocate nothing once warm.
-    static SCRATCH: Cell<(Vec<Piece>, Vec<(f64, u32)>)> = const { Cell::new((Vec::new(), Vec::new())) };
+    static SCRATCH: Cell<Scratch> = const { Cell::new((Vec::new(), Vec::new())) };
 }
 
 impl BlobPart {

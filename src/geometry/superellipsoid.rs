@@ -92,7 +92,7 @@ impl Superellipsoid {
         let hi = (DVec3::splat(1.0 + 1e-9) - ray.origin) * inv;
         let t0 = lo.min(hi).max_element();
         let t1 = lo.max(hi).min_element();
-        if !(t0 < t1) || !t0.is_finite() || !t1.is_finite() {
+        if t0 >= t1 || t0.is_nan() || !t0.is_finite() || !t1.is_finite() {
             return;
         }
         let tolerance = DEPTH_TOLERANCE / ray.direction.length().max(1e-300);

@@ -177,7 +177,7 @@ fn blob_data(blob: &Blob) -> Option<BlobData> {
             BlobComponentKind::Cylinder { end1, end2 } => {
                 let axis = end2 - end1;
                 let len = axis.length();
-                if !(len > 0.0) || !len.is_finite() {
+                if len.is_nan() || len <= 0.0 || !len.is_finite() {
                     continue;
                 }
                 let w = axis / len;

@@ -83,7 +83,7 @@ impl Evaluator<'_> {
         if blob.components.is_empty() {
             return Err(self.err(kw.span, "this blob has no components"));
         }
-        if !(blob.threshold > 0.0) {
+        if blob.threshold.is_nan() || blob.threshold <= 0.0 {
             return Err(self.err(
                 kw.span,
                 format!("the blob's threshold {} must be positive", blob.threshold),
@@ -118,7 +118,7 @@ impl Evaluator<'_> {
         };
         let (v, s) = self.expr()?;
         let radius = self.to_float(&v, s)?;
-        if !(radius > 0.0) {
+        if radius.is_nan() || radius <= 0.0 {
             return Err(self.err(s, format!("the radius {radius} must be positive")));
         }
         self.eat(Punct::Comma)?;
@@ -136,9 +136,8 @@ impl Evaluator<'_> {
             if tok.is_punct(Punct::RBrace) {
                 break;
             }
-            if let Some(w @ ("texture" | "pigment" | "finish" | "normal")) = tok.ident() {
-                let name = format!("`{w}` on a blob component");
-                self.unsupported_or_skip(&tok, &name)?;
+            if let Some("texture" | "pigment" | "finish" | "normal") = tok.ident() {
+                self.unsupported_or_skip(&tok, "textures on blob components")?;
                 continue;
             }
             return Err(self.stray_in_block(&tok, &what));
