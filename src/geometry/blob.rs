@@ -145,7 +145,8 @@ fn sphere_piece(o: DVec3, d: DVec3, s: f64, lo: f64, hi: f64, out: &mut Vec<Piec
         let (r0, r1) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
         (r0.min(r1).max(lo), r0.max(r1).min(hi))
     };
-    if start >= end {
+    // Also drops NaN ends, which would unbalance the sweep's count.
+    if start.partial_cmp(&end) != Some(std::cmp::Ordering::Less) {
         return;
     }
     // w = 1 - |o + u d|^2 = -(a u^2 + b u + c); s w^2.
