@@ -309,6 +309,19 @@ mod tests {
     }
 
     #[test]
+    fn grazing_rays_hit_or_miss_correctly() {
+        let b = blob(0.25, vec![sphere_part(DVec3::ZERO, 1.0, 1.0)]);
+        let r = 0.5f64.sqrt();
+        for k in 2..=7 {
+            let e = 10f64.powi(-k);
+            let inside = Ray::new(DVec3::new(r - e, 0.0, -5.0), DVec3::Z);
+            let outside = Ray::new(DVec3::new(r + e, 0.0, -5.0), DVec3::Z);
+            assert_eq!(hits(&b, &inside).len(), 2, "k={k}");
+            assert!(hits(&b, &outside).is_empty(), "k={k}");
+        }
+    }
+
+    #[test]
     fn two_spheres_merge_and_a_negative_one_cuts() {
         // Two spheres of radius 1 at x = -0.5 and 0.5, threshold 0.5: at the origin each
         // gives (1 - 0.25)^2 = 0.5625, so the middle is joined.
