@@ -1,6 +1,7 @@
 //! Geometry: rays, shapes, transforms, bounding boxes, the BVH, and the render-ready world.
 
 mod aabb;
+mod blob;
 mod bvh;
 mod prism;
 mod profile;
@@ -8,15 +9,18 @@ mod ray;
 mod revolve;
 mod roots;
 mod shapes;
+mod superellipsoid;
 mod transform;
 mod world;
 
 pub use aabb::Aabb;
+pub use blob::{BlobData, BlobPart};
 pub use bvh::Bvh;
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use revolve::{LatheData, SorData};
 pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
+pub use superellipsoid::Superellipsoid;
 pub use transform::Transform;
 pub use world::{
     CsgOp, Hit, Item, Primitive, SurfacePoint, TexturePoint, World, WorldBuilder, flags,

@@ -6,9 +6,11 @@ use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
+use super::blob::BlobData;
 use super::prism::PrismData;
 use super::revolve::{LatheData, SorData};
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
+use super::superellipsoid::Superellipsoid;
 use super::{Aabb, Ray};
 
 /// Data too large to sit inside [`ShapeKind`].
@@ -23,6 +25,7 @@ pub struct ShapeTables {
     pub prisms: Vec<PrismData>,
     pub sors: Vec<SorData>,
     pub lathes: Vec<LatheData>,
+    pub blobs: Vec<BlobData>,
 }
 
 impl ShapeTables {
@@ -51,6 +54,13 @@ impl ShapeTables {
                 .lathes
                 .iter()
                 .map(|l| size_of::<LatheData>() + l.profile.memory_bytes())
+                .sum::<usize>()
+            + self
+                .blobs
+                .iter()
+                .map(|b| {
+                    size_of::<BlobData>() + b.parts.capacity() * size_of::<super::blob::BlobPart>()
+                })
                 .sum::<usize>()
     }
 }
@@ -116,6 +126,11 @@ pub enum ShapeKind {
     /// Surfaces of revolution, read the same way as prisms.
     Sor(u32),
     Lathe(u32),
+    /// It can cross a ray more often than [`Roots`] holds (the pinched ones), so CSG reads
+    /// its crossings through [`ShapeKind::each_hit`].
+    Superellipsoid(Superellipsoid),
+    /// Read the same way as superellipsoids.
+    Blob(u32),
 }
 
 impl ShapeKind {
@@ -154,6 +169,8 @@ impl ShapeKind {
             ShapeKind::Prism(i) => Some(tables.prisms[i as usize].bounds()),
             ShapeKind::Sor(i) => Some(tables.sors[i as usize].bounds()),
             ShapeKind::Lathe(i) => Some(tables.lathes[i as usize].bounds()),
+            ShapeKind::Superellipsoid(s) => Some(s.bounds()),
+            ShapeKind::Blob(i) => Some(tables.blobs[i as usize].bounds),
         }
     }
 
@@ -170,6 +187,18 @@ impl ShapeKind {
             });
             return (best < t_max).then_some(best);
         }
+        if let ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) = *self {
+            // Crossings come in increasing order: stop at the first ahead of the origin.
+            let mut found = None;
+            self.crossings(ray, tables, |t| {
+                if t > 0.0 {
+                    found = (t < t_max).then_some(t);
+                    return false;
+                }
+                true
+            });
+            return found;
+        }
         let hits = self.all_hits(ray, tables);
         hits.as_slice()
             .iter()
@@ -185,6 +214,12 @@ impl ShapeKind {
             ShapeKind::Prism(i) => tables.prisms[i as usize].each_hit(ray, f),
             ShapeKind::Sor(i) => tables.sors[i as usize].each_hit(ray, f),
             ShapeKind::Lathe(i) => tables.lathes[i as usize].each_hit(ray, f),
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+                self.crossings(ray, tables, |t| {
+                    f(t);
+                    true
+                });
+            }
             _ => {
                 for &t in self.all_hits(ray, tables).as_slice() {
                     f(t);
@@ -193,8 +228,18 @@ impl ShapeKind {
         }
     }
 
+    /// The crossings of shapes that find them in increasing order, until `f` says stop.
+    fn crossings(&self, ray: &Ray, tables: &ShapeTables, f: impl FnMut(f64) -> bool) {
+        match *self {
+            ShapeKind::Superellipsoid(s) => s.each_hit(ray, f),
+            ShapeKind::Blob(i) => tables.blobs[i as usize].each_hit(ray, f),
+            _ => {}
+        }
+    }
+
     /// The crossings of the surface along the whole line, sorted, for shapes with at most
-    /// four (a prism gives its first four found; use [`ShapeKind::each_hit`]).
+    /// four (prisms, surfaces of revolution, blobs and superellipsoids give their first four; use
+    /// [`ShapeKind::each_hit`]).
     pub fn all_hits(&self, ray: &Ray, tables: &ShapeTables) -> Roots {
         match *self {
             ShapeKind::Sphere { center, radius } => sphere_roots(ray, center, radius),
@@ -259,6 +304,11 @@ impl ShapeKind {
                 r.sort();
                 r
             }
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+                let mut r = Roots::default();
+                self.each_hit(ray, tables, |t| r.push(t));
+                r
+            }
         }
     }
 
@@ -319,6 +369,8 @@ impl ShapeKind {
             ShapeKind::Prism(i) => tables.prisms[i as usize].normal(p),
             ShapeKind::Sor(i) => tables.sors[i as usize].normal(p),
             ShapeKind::Lathe(i) => tables.lathes[i as usize].normal(p),
+            ShapeKind::Superellipsoid(s) => s.gradient(p),
+            ShapeKind::Blob(i) => tables.blobs[i as usize].normal(p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -426,6 +478,8 @@ impl ShapeKind {
             ShapeKind::Prism(i) => tables.prisms[i as usize].inside(p),
             ShapeKind::Sor(i) => tables.sors[i as usize].inside(p),
             ShapeKind::Lathe(i) => tables.lathes[i as usize].inside(p),
+            ShapeKind::Superellipsoid(s) => s.inside(p),
+            ShapeKind::Blob(i) => tables.blobs[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

@@ -293,6 +293,8 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Torus { .. } => "torus",
             crate::scene::Shape::Quadric { .. } => "quadric",
             crate::scene::Shape::Quartic { .. } => "quartic",
+            crate::scene::Shape::Superellipsoid { .. } => "superellipsoid",
+            crate::scene::Shape::Blob(_) => "blob",
             crate::scene::Shape::Triangle { .. } => "triangle",
             crate::scene::Shape::SmoothTriangle { .. } => "smooth_triangle",
             crate::scene::Shape::Mesh(_) => "mesh",

@@ -6,11 +6,12 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    CsgOp, Item, LatheData, PolygonData, PrismData, ShapeKind, SorData, Transform, TriangleData,
-    World, WorldBuilder, flags,
+    Aabb, BlobData, BlobPart, CsgOp, Item, LatheData, PolygonData, PrismData, ShapeKind, SorData,
+    Superellipsoid, Transform, TriangleData, World, WorldBuilder, flags,
 };
 use crate::scene::{
-    Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene, Shape, SkySphere, Texture,
+    Blob, BlobComponentKind, Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene,
+    Shape, SkySphere, Texture,
 };
 
 use super::dimensions::{DimensionLayout, OptionalDecisions};
@@ -157,6 +158,50 @@ fn axis_frame(from: DVec3, to: DVec3) -> Option<Transform> {
     let w = axis / len;
     let (u, v) = w.any_orthonormal_pair();
     Transform::from_affine(DAffine3::from_cols(u, v, axis, from))
+}
+
+/// A blob's components in their canonical frames (radius 1; a cylinder along z from its
+/// first end), bounded by the components that add to the field.
+fn blob_data(blob: &Blob) -> Option<BlobData> {
+    let mut parts = Vec::with_capacity(blob.components.len());
+    for c in &blob.components {
+        let r = c.radius.abs();
+        if r <= 0.0 || !r.is_finite() {
+            continue;
+        }
+        let (frame, length) = match c.kind {
+            BlobComponentKind::Sphere { center } => (
+                DAffine3::from_translation(center) * DAffine3::from_scale(DVec3::splat(r)),
+                0.0,
+            ),
+            BlobComponentKind::Cylinder { end1, end2 } => {
+                let axis = end2 - end1;
+                let len = axis.length();
+                if len.is_nan() || len <= 0.0 || !len.is_finite() {
+                    continue;
+                }
+                let w = axis / len;
+                let (u, v) = w.any_orthonormal_pair();
+                (DAffine3::from_cols(u * r, v * r, w * r, end1), len / r)
+            }
+        };
+        let forward = c.transform.forward * frame;
+        let to_local = Transform::from_affine(forward)?.inverse;
+        parts.push(BlobPart {
+            to_local,
+            strength: c.strength,
+            length,
+        });
+    }
+    let bounds = parts
+        .iter()
+        .filter(|p| p.strength > 0.0)
+        .fold(Aabb::EMPTY, |b, p| b.union(&p.bounds()));
+    Some(BlobData {
+        threshold: blob.threshold,
+        parts,
+        bounds,
+    })
 }
 
 /// What a CSG child inherits from its parents: texture, interior and flags.
@@ -448,6 +493,20 @@ impl Builder {
                 )
             }
             Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
+            Shape::Superellipsoid {
+                east_west,
+                north_south,
+            } => (
+                ShapeKind::Superellipsoid(Superellipsoid::new(east_west, north_south)),
+                None,
+            ),
+            Shape::Blob(ref blob) => {
+                self.world.tables.blobs.push(blob_data(blob)?);
+                (
+                    ShapeKind::Blob((self.world.tables.blobs.len() - 1) as u32),
+                    None,
+                )
+            }
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
             | Shape::Mesh(_)

@@ -71,6 +71,13 @@ pub enum Shape {
     Prism(Prism),
     Sor(Sor),
     Lathe(Lathe),
+    /// `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1 in the
+    /// unit cube; `east_west` is e, `north_south` is n.
+    Superellipsoid {
+        east_west: f64,
+        north_south: f64,
+    },
+    Blob(Blob),
     Union(Vec<Object>),
     /// A union without the interior surfaces.
     Merge(Vec<Object>),
@@ -116,6 +123,31 @@ pub struct Mesh {
     pub triangles: Vec<MeshTriangle>,
     /// A direction for the inside test (ray parity); without it a mesh has no inside.
     pub inside_vector: Option<DVec3>,
+}
+
+/// POV-Ray's blob: the surface where the summed field of the components equals
+/// `threshold`; the inside is where the field exceeds it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Blob {
+    pub threshold: f64,
+    pub components: Vec<BlobComponent>,
+}
+
+/// One field source: `strength * (1 - (d / radius)^2)^2` within `radius` of its centre (a
+/// point, or a segment whose ends are hemispheres), placed in the blob's space by
+/// `transform`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlobComponent {
+    pub kind: BlobComponentKind,
+    pub radius: f64,
+    pub strength: f64,
+    pub transform: Transform,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BlobComponentKind {
+    Sphere { center: DVec3 },
+    Cylinder { end1: DVec3, end2: DVec3 },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

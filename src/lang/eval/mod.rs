@@ -11,6 +11,7 @@
 //! includes), `expr` (expressions), `functions` (the table of built-in functions), `items` (camera, lights, global
 //! settings), `objects` (shapes, CSG, modifiers), `texture` (pigment, finish, texture).
 
+mod blob;
 pub mod budget;
 mod directives;
 mod expr;

@@ -62,6 +62,8 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("difference", |ev, kw| {
         kept(ev.csg_children(&the(kw), Shape::Difference)?)
     }),
+    ("superellipsoid", |ev, _| kept(ev.superellipsoid()?)),
+    ("blob", |ev, kw| kept(ev.blob_items(kw)?)),
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
@@ -77,13 +79,11 @@ pub fn is_object_keyword(word: &str) -> bool {
 pub fn is_known_unsupported_shape(word: &str) -> bool {
     matches!(
         word,
-        "blob"
-            | "mesh2"
+        "mesh2"
             | "text"
             | "height_field"
             | "isosurface"
             | "parametric"
-            | "superellipsoid"
             | "julia_fractal"
             | "bicubic_patch"
             | "cubic"

@@ -1,0 +1,327 @@
+//! POV-Ray's superellipsoid: g(x, y, z) = (|x|^p + |y|^p)^(p_z / p) + |z|^p_z = 1 inside the
+//! unit cube, with p = 2 / e (east-west) and p_z = 2 / n (north-south).
+//!
+//! Along a ray, f(t) = g - 1 is convex when both exponents are at least 1 (a norm raised to
+//! a power >= 1, plus a convex term), so it has at most two roots, found on either side of
+//! its minimum, which is the root of the monotone f'. Otherwise (e or n above 2, the
+//! pinched stars) the ray is cut where it crosses the coordinate planes, each piece is
+//! sampled, and sign changes and dips between samples are refined. Grazing rays near a
+//! tangency find the minimum itself, so they neither miss the surface nor see holes.
+
+use glam::DVec3;
+
+use super::{Aabb, Ray};
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Superellipsoid {
+    /// 2 / e, the exponent of x and y.
+    p: f64,
+    /// 2 / n, the exponent of z.
+    p_z: f64,
+}
+
+/// How close to its origin (in the unit cube's units) a ray ignores the surface: the ray
+/// leaving the surface starts on it only up to the root's error.
+const DEPTH_TOLERANCE: f64 = 1e-7;
+
+/// Samples per piece of the ray for the non-convex shapes.
+const SAMPLES: usize = 24;
+
+impl Superellipsoid {
+    /// From POV-Ray's `<e, n>`; exponents are clamped away from zero as a box is the limit.
+    pub fn new(east_west: f64, north_south: f64) -> Superellipsoid {
+        let e = east_west.abs().max(1e-4);
+        let n = north_south.abs().max(1e-4);
+        Superellipsoid {
+            p: 2.0 / e,
+            p_z: 2.0 / n,
+        }
+    }
+
+    pub fn bounds(&self) -> Aabb {
+        Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
+    }
+
+    /// g - 1: negative inside.
+    #[inline]
+    pub fn value(&self, q: DVec3) -> f64 {
+        let a = q.x.abs().powf(self.p) + q.y.abs().powf(self.p);
+        a.powf(self.p_z / self.p) + q.z.abs().powf(self.p_z) - 1.0
+    }
+
+    /// The gradient of g (outward on the surface).
+    pub fn gradient(&self, q: DVec3) -> DVec3 {
+        let (p, pz) = (self.p, self.p_z);
+        let (ax, ay, az) = (q.x.abs(), q.y.abs(), q.z.abs());
+        let a = ax.powf(p) + ay.powf(p);
+        // d/dx (a^(pz/p)) = pz a^(pz/p - 1) |x|^(p-1) sgn x.
+        let outer = if a > 0.0 {
+            pz * a.powf(pz / p - 1.0)
+        } else {
+            0.0
+        };
+        let part = |v: f64, av: f64, e: f64| {
+            if av > 0.0 {
+                av.powf(e - 1.0) * v.signum()
+            } else {
+                0.0
+            }
+        };
+        DVec3::new(
+            outer * part(q.x, ax, p),
+            outer * part(q.y, ay, p),
+            pz * part(q.z, az, pz),
+        )
+    }
+
+    pub fn inside(&self, q: DVec3) -> bool {
+        self.value(q) < -1e-12
+    }
+
+    fn convex(&self) -> bool {
+        self.p >= 1.0 && self.p_z >= 1.0
+    }
+
+    /// Calls `f` with every crossing along the line, in increasing order, until it returns
+    /// false.
+    pub fn each_hit(&self, ray: &Ray, mut f: impl FnMut(f64) -> bool) {
+        // The line within the cube, slightly enlarged so the faces of a box-like shape are
+        // not cut by the clip.
+        let inv = ray.direction.recip();
+        let lo = (DVec3::splat(-1.0 - 1e-9) - ray.origin) * inv;
+        let hi = (DVec3::splat(1.0 + 1e-9) - ray.origin) * inv;
+        let t0 = lo.min(hi).max_element();
+        let t1 = lo.max(hi).min_element();
+        if t0 >= t1 || t0.is_nan() || !t0.is_finite() || !t1.is_finite() {
+            return;
+        }
+        let tolerance = DEPTH_TOLERANCE / ray.direction.length().max(1e-300);
+        let mut keep = |t: f64| t.abs() <= tolerance || f(t);
+        if self.convex() {
+            self.convex_hits(ray, t0, t1, &mut keep);
+            return;
+        }
+        // Cut at the coordinate planes, where |.| makes the function kink.
+        let mut cuts = [t0, t1, t1, t1, t1];
+        let mut n = 1;
+        for axis in 0..3 {
+            let t = -ray.origin[axis] * inv[axis];
+            if t > t0 && t < t1 {
+                cuts[n] = t;
+                n += 1;
+            }
+        }
+        cuts[n] = t1;
+        cuts[..=n].sort_by(f64::total_cmp);
+        for w in cuts[..=n].windows(2) {
+            if !self.sampled_hits(ray, w[0], w[1], &mut keep) {
+                return;
+            }
+        }
+    }
+
+    #[inline]
+    fn along(&self, ray: &Ray, t: f64) -> f64 {
+        self.value(ray.at(t))
+    }
+
+    #[inline]
+    fn slope(&self, ray: &Ray, t: f64) -> f64 {
+        self.gradient(ray.at(t)).dot(ray.direction)
+    }
+
+    /// At most two roots, either side of the minimum of the convex f.
+    fn convex_hits(&self, ray: &Ray, a: f64, b: f64, f: &mut impl FnMut(f64) -> bool) {
+        let (fa, fb) = (self.along(ray, a), self.along(ray, b));
+        if fa <= 0.0 && fb <= 0.0 {
+            return;
+        }
+        if (fa <= 0.0) != (fb <= 0.0) {
+            let _ = f(self.root(ray, a, b, fa));
+            return;
+        }
+        // Both ends outside: the minimum decides.
+        if self.slope(ray, a) >= 0.0 || self.slope(ray, b) <= 0.0 {
+            return;
+        }
+        let m = self.slope_root(ray, a, b);
+        let fm = self.along(ray, m);
+        if fm < 0.0 && f(self.root(ray, a, m, fa)) {
+            let _ = f(self.root(ray, m, b, fm));
+        }
+    }
+
+    /// Roots in [a, b] (a smooth piece) from samples: sign changes, and dips below zero
+    /// between samples found by searching the sampled minimum. False when `f` stopped.
+    fn sampled_hits(&self, ray: &Ray, a: f64, b: f64, f: &mut impl FnMut(f64) -> bool) -> bool {
+        let step = (b - a) / SAMPLES as f64;
+        let at = |i: usize| if i == SAMPLES { b } else { a + step * i as f64 };
+        let mut values = [0.0; SAMPLES + 1];
+        for (i, v) in values.iter_mut().enumerate() {
+            *v = self.along(ray, at(i));
+        }
+        for i in 0..SAMPLES {
+            let (v0, v1) = (values[i], values[i + 1]);
+            if (v0 <= 0.0) != (v1 <= 0.0) {
+                if !f(self.root(ray, at(i), at(i + 1), v0)) {
+                    return false;
+                }
+                continue;
+            }
+            if v0 <= 0.0 {
+                continue;
+            }
+            // Both outside: a dip below zero between them shows as a falling-then-rising
+            // slope next to a sampled local minimum; search the minimum there.
+            let low = |k: usize| {
+                (k == 0 || values[k] <= values[k - 1])
+                    && (k == SAMPLES || values[k] <= values[k + 1])
+            };
+            if (low(i) || low(i + 1))
+                && self.slope(ray, at(i)) < 0.0
+                && self.slope(ray, at(i + 1)) > 0.0
+            {
+                let m = self.slope_root(ray, at(i), at(i + 1));
+                let fm = self.along(ray, m);
+                if fm < 0.0 {
+                    if !f(self.root(ray, at(i), m, v0)) {
+                        return false;
+                    }
+                    if !f(self.root(ray, m, at(i + 1), fm)) {
+                        return false;
+                    }
+                }
+            }
+        }
+        true
+    }
+
+    /// The root of f in [a, b], where f changes sign (f(a) = fa).
+    fn root(&self, ray: &Ray, a: f64, b: f64, fa: f64) -> f64 {
+        let fb = self.along(ray, b);
+        illinois(|t| self.along(ray, t), a, b, fa, fb, 1e-13)
+    }
+
+    /// The root of the slope in [a, b], where it rises from negative to positive.
+    fn slope_root(&self, ray: &Ray, a: f64, b: f64) -> f64 {
+        let (sa, sb) = (self.slope(ray, a), self.slope(ray, b));
+        illinois(|t| self.slope(ray, t), a, b, sa, sb, 1e-10)
+    }
+}
+
+/// The root of g in [a, b] where g changes sign (g(a) = ga, g(b) = gb): regula falsi with
+/// the Illinois rule (the stale end's value halved), which converges superlinearly and never
+/// leaves the bracket; stops when the bracket or the step is below `rel` of the span.
+fn illinois(
+    g: impl Fn(f64) -> f64,
+    mut a: f64,
+    mut b: f64,
+    mut ga: f64,
+    mut gb: f64,
+    rel: f64,
+) -> f64 {
+    let tol = rel * (a.abs() + b.abs()).max(1e-10);
+    let mut side = 0;
+    let mut t = 0.5 * (a + b);
+    for _ in 0..100 {
+        let prev = t;
+        t = if gb != ga {
+            (a * gb - b * ga) / (gb - ga)
+        } else {
+            0.5 * (a + b)
+        };
+        if !(t > a && t < b) {
+            t = 0.5 * (a + b);
+        }
+        let gt = g(t);
+        if gt == 0.0 {
+            return t;
+        }
+        if (gt < 0.0) == (gb < 0.0) {
+            b = t;
+            gb = gt;
+            if side == -1 {
+                ga *= 0.5;
+            }
+            side = -1;
+        } else {
+            a = t;
+            ga = gt;
+            if side == 1 {
+                gb *= 0.5;
+            }
+            side = 1;
+        }
+        if b - a <= tol || (t - prev).abs() <= tol * 0.01 {
+            break;
+        }
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn hits(s: &Superellipsoid, ray: &Ray) -> Vec<f64> {
+        let mut out = Vec::new();
+        s.each_hit(ray, |t| {
+            out.push(t);
+            true
+        });
+        out
+    }
+
+    #[test]
+    fn a_sphere_and_a_box() {
+        // <1, 1> is the unit sphere.
+        let s = Superellipsoid::new(1.0, 1.0);
+        let h = hits(&s, &Ray::new(DVec3::new(0.6, 0.0, -5.0), DVec3::Z));
+        assert_eq!(h.len(), 2);
+        assert!(
+            (h[0] - (5.0 - 0.8)).abs() < 1e-9 && (h[1] - 5.8).abs() < 1e-9,
+            "{h:?}"
+        );
+        assert!(s.inside(DVec3::new(0.5, 0.5, 0.5)) && !s.inside(DVec3::new(0.6, 0.6, 0.6)));
+        let g = s.gradient(DVec3::new(0.6, 0.0, 0.8));
+        assert!((g.normalize() - DVec3::new(0.6, 0.0, 0.8)).length() < 1e-9);
+        // Small exponents: nearly the cube.
+        let b = Superellipsoid::new(0.05, 0.05);
+        let h = hits(&b, &Ray::new(DVec3::new(0.5, 0.3, -5.0), DVec3::Z));
+        assert_eq!(h.len(), 2);
+        assert!(
+            (h[0] - 4.0).abs() < 1e-3 && (h[1] - 6.0).abs() < 1e-3,
+            "{h:?}"
+        );
+    }
+
+    #[test]
+    fn grazing_rays_meet_the_sphere() {
+        let s = Superellipsoid::new(1.0, 1.0);
+        for k in 2..=6 {
+            let e = 10f64.powi(-k);
+            let inside = Ray::new(DVec3::new(1.0 - e, 0.0, -5.0), DVec3::Z);
+            let outside = Ray::new(DVec3::new(1.0 + e, 0.0, -5.0), DVec3::Z);
+            assert_eq!(hits(&s, &inside).len(), 2, "k={k}");
+            assert!(hits(&s, &outside).is_empty(), "k={k}");
+        }
+    }
+
+    #[test]
+    fn a_pinched_star() {
+        // <3, 3>: concave faces. On the x axis the surface is at x = 1, on the diagonal
+        // x = y = z where 3 x^(2/3) = 1, x = 3^(-3/2).
+        let s = Superellipsoid::new(3.0, 3.0);
+        let h = hits(&s, &Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
+        assert!((h[0] - 4.0).abs() < 1e-9, "{h:?}");
+        let d = DVec3::ONE.normalize();
+        let h = hits(&s, &Ray::new(-5.0 * d, d));
+        let x = 3f64.powf(-1.5);
+        assert!((h[0] - (5.0 - x * 3f64.sqrt())).abs() < 1e-7, "{h:?}");
+        // A ray parallel to x at height y = 0.3: in the xy plane |x|^(2/3) + |y|^(2/3) = 1.
+        let h = hits(&s, &Ray::new(DVec3::new(-5.0, 0.3, 0.0), DVec3::X));
+        assert_eq!(h.len(), 2, "{h:?}");
+        let x = (1.0 - 0.3f64.powf(2.0 / 3.0)).powf(1.5);
+        assert!((h[0] - (5.0 - x)).abs() < 1e-7, "{h:?}");
+    }
+}
