@@ -92,23 +92,7 @@ pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
         derivative[i] = c * (degree - i) as f64;
     }
     let critical = roots_in(&derivative[..degree], lo, hi);
-    let mut bounds = [lo; 6];
-    let mut n = 1;
-    for &c in critical.as_slice() {
-        if c > bounds[n - 1] {
-            bounds[n] = c;
-            n += 1;
-        }
-    }
-    bounds[n] = hi;
-    n += 1;
-    for w in bounds[..n].windows(2) {
-        if let Some(t) = monotone_root(coef, w[0], w[1])
-            && (out.len == 0 || (t - out.values[out.len - 1]).abs() > 1e-12 * t.abs().max(1.0))
-        {
-            out.push(t);
-        }
-    }
+    monotone_roots(coef, lo, hi, critical.as_slice(), |t| out.push(t));
     out
 }
 
@@ -151,24 +135,31 @@ pub fn roots_in_wide(coef: &[f64], lo: f64, hi: f64) -> WideRoots {
         derivative[i] = c * (degree - i) as f64;
     }
     let critical = roots_in_wide(&derivative[..degree], lo, hi);
-    let mut bounds = [lo; 8];
-    let mut n = 1;
-    for &c in critical.as_slice() {
-        if c > bounds[n - 1] {
-            bounds[n] = c;
-            n += 1;
-        }
-    }
-    bounds[n] = hi;
-    n += 1;
-    for w in bounds[..n].windows(2) {
-        if let Some(t) = monotone_root(coef, w[0], w[1])
-            && (out.len == 0 || (t - out.values[out.len - 1]).abs() > 1e-12 * t.abs().max(1.0))
-        {
-            out.push(t);
-        }
-    }
+    monotone_roots(coef, lo, hi, critical.as_slice(), |t| out.push(t));
     out
+}
+
+/// The roots in [lo, hi] of a polynomial whose sorted critical points there are `critical`:
+/// one per monotone piece between them, in increasing order, a root shared by two pieces
+/// given once.
+fn monotone_roots(coef: &[f64], lo: f64, hi: f64, critical: &[f64], mut push: impl FnMut(f64)) {
+    let mut last: Option<f64> = None;
+    let mut piece = |a: f64, b: f64| {
+        if let Some(t) = monotone_root(coef, a, b)
+            && last.is_none_or(|l| (t - l).abs() > 1e-12 * t.abs().max(1.0))
+        {
+            push(t);
+            last = Some(t);
+        }
+    };
+    let mut a = lo;
+    for &c in critical {
+        if c > a {
+            piece(a, c);
+            a = c;
+        }
+    }
+    piece(a, hi);
 }
 
 /// The root of a polynomial that is monotone on [a, b], if its sign changes there.

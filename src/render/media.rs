@@ -35,7 +35,6 @@ pub struct Coefficients {
 
 #[derive(Clone, Debug)]
 pub struct PreparedMedium {
-    absorption: DVec3,
     pub emission: DVec3,
     /// The scattering colour, zero for a medium that does not scatter.
     pub scattering: DVec3,
@@ -56,7 +55,6 @@ impl PreparedMedium {
     pub fn new(m: &Media) -> PreparedMedium {
         let s = &m.sampling;
         PreparedMedium {
-            absorption: m.absorption,
             emission: m.emission,
             scattering: m.scattering.map_or(DVec3::ZERO, |s| s.colour),
             extinction: m.extinction(),
@@ -99,11 +97,6 @@ impl PreparedMedium {
             extinction: self.extinction * density,
             emission: self.emission * density,
         }
-    }
-
-    /// What the absorption alone takes out (for tests and reports).
-    pub fn absorption(&self) -> DVec3 {
-        self.absorption
     }
 }
 
