@@ -7,6 +7,7 @@
 //! [study] holds the tools that measure the renderer against POV-Ray.
 
 pub mod appearance;
+pub mod function;
 pub mod geometry;
 pub mod lang;
 pub mod output;

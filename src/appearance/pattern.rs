@@ -156,6 +156,9 @@ fn inner_generator(generator: u8) -> u8 {
 fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
     match &pattern.kind {
         PatternKind::Gradient(g) => gradient_value(p.dot(*g)),
+        // Measured: values above 1 wrap as gradient's do (1.25 and 10.25 read 0.25, 1 stays
+        // 1), and -0.25 reads 0.75.
+        PatternKind::Function(f) => gradient_value(f.at(p)),
         PatternKind::Onion => p.length(),
         PatternKind::Radial => 0.25 + (p.x.atan2(p.z) + PI) / TAU,
         PatternKind::Leopard => {

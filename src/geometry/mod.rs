@@ -3,6 +3,7 @@
 mod aabb;
 mod blob;
 mod bvh;
+mod isosurface;
 mod prism;
 mod profile;
 mod ray;
@@ -16,6 +17,7 @@ mod world;
 pub use aabb::Aabb;
 pub use blob::{BlobData, BlobPart};
 pub use bvh::Bvh;
+pub use isosurface::{Container, IsoData};
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use revolve::{LatheData, SorData};

@@ -7,6 +7,7 @@ use std::f64::consts::{PI, TAU};
 use glam::{DVec2, DVec3};
 
 use super::blob::BlobData;
+use super::isosurface::IsoData;
 use super::prism::PrismData;
 use super::revolve::{LatheData, SorData};
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
@@ -26,6 +27,7 @@ pub struct ShapeTables {
     pub sors: Vec<SorData>,
     pub lathes: Vec<LatheData>,
     pub blobs: Vec<BlobData>,
+    pub isosurfaces: Vec<IsoData>,
 }
 
 impl ShapeTables {
@@ -62,6 +64,7 @@ impl ShapeTables {
                     size_of::<BlobData>() + b.parts.capacity() * size_of::<super::blob::BlobPart>()
                 })
                 .sum::<usize>()
+            + self.isosurfaces.capacity() * size_of::<IsoData>()
     }
 }
 
@@ -131,6 +134,8 @@ pub enum ShapeKind {
     Superellipsoid(Superellipsoid),
     /// Read the same way as superellipsoids.
     Blob(u32),
+    /// Read the same way as superellipsoids.
+    Isosurface(u32),
 }
 
 impl ShapeKind {
@@ -171,6 +176,7 @@ impl ShapeKind {
             ShapeKind::Lathe(i) => Some(tables.lathes[i as usize].bounds()),
             ShapeKind::Superellipsoid(s) => Some(s.bounds()),
             ShapeKind::Blob(i) => Some(tables.blobs[i as usize].bounds),
+            ShapeKind::Isosurface(i) => Some(tables.isosurfaces[i as usize].bounds()),
         }
     }
 
@@ -186,6 +192,17 @@ impl ShapeKind {
                 }
             });
             return (best < t_max).then_some(best);
+        }
+        if let ShapeKind::Isosurface(i) = *self {
+            let mut found = None;
+            tables.isosurfaces[i as usize].hits_from(ray, 0.0, |t| {
+                if t > 0.0 {
+                    found = (t < t_max).then_some(t);
+                    return false;
+                }
+                true
+            });
+            return found;
         }
         if let ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) = *self {
             // Crossings come in increasing order: stop at the first ahead of the origin.
@@ -214,7 +231,7 @@ impl ShapeKind {
             ShapeKind::Prism(i) => tables.prisms[i as usize].each_hit(ray, f),
             ShapeKind::Sor(i) => tables.sors[i as usize].each_hit(ray, f),
             ShapeKind::Lathe(i) => tables.lathes[i as usize].each_hit(ray, f),
-            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Isosurface(_) => {
                 self.crossings(ray, tables, |t| {
                     f(t);
                     true
@@ -233,6 +250,7 @@ impl ShapeKind {
         match *self {
             ShapeKind::Superellipsoid(s) => s.each_hit(ray, f),
             ShapeKind::Blob(i) => tables.blobs[i as usize].each_hit(ray, f),
+            ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].each_hit(ray, f),
             _ => {}
         }
     }
@@ -304,7 +322,7 @@ impl ShapeKind {
                 r.sort();
                 r
             }
-            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Isosurface(_) => {
                 let mut r = Roots::default();
                 self.each_hit(ray, tables, |t| r.push(t));
                 r
@@ -371,6 +389,7 @@ impl ShapeKind {
             ShapeKind::Lathe(i) => tables.lathes[i as usize].normal(p),
             ShapeKind::Superellipsoid(s) => s.gradient(p),
             ShapeKind::Blob(i) => tables.blobs[i as usize].normal(p),
+            ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].normal(p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -480,6 +499,7 @@ impl ShapeKind {
             ShapeKind::Lathe(i) => tables.lathes[i as usize].inside(p),
             ShapeKind::Superellipsoid(s) => s.inside(p),
             ShapeKind::Blob(i) => tables.blobs[i as usize].inside(p),
+            ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

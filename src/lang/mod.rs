@@ -295,6 +295,7 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Quartic { .. } => "quartic",
             crate::scene::Shape::Superellipsoid { .. } => "superellipsoid",
             crate::scene::Shape::Blob(_) => "blob",
+            crate::scene::Shape::Isosurface(_) => "isosurface",
             crate::scene::Shape::Triangle { .. } => "triangle",
             crate::scene::Shape::SmoothTriangle { .. } => "smooth_triangle",
             crate::scene::Shape::Mesh(_) => "mesh",

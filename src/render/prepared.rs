@@ -162,6 +162,18 @@ fn axis_frame(from: DVec3, to: DVec3) -> Option<Transform> {
 
 /// A blob's components in their canonical frames (radius 1; a cylinder along z from its
 /// first end), bounded by the components that add to the field.
+fn iso_data(iso: &crate::scene::Isosurface) -> crate::geometry::IsoData {
+    crate::geometry::IsoData {
+        function: iso.function.clone(),
+        container: iso.container,
+        threshold: iso.threshold,
+        accuracy: iso.accuracy,
+        max_gradient: iso.max_gradient,
+        open: iso.open,
+        steepest: Default::default(),
+    }
+}
+
 fn blob_data(blob: &Blob) -> Option<BlobData> {
     let mut parts = Vec::with_capacity(blob.components.len());
     for c in &blob.components {
@@ -493,19 +505,8 @@ impl Builder {
                 )
             }
             Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
-            Shape::Superellipsoid {
-                east_west,
-                north_south,
-            } => (
-                ShapeKind::Superellipsoid(Superellipsoid::new(east_west, north_south)),
-                None,
-            ),
-            Shape::Blob(ref blob) => {
-                self.world.tables.blobs.push(blob_data(blob)?);
-                (
-                    ShapeKind::Blob((self.world.tables.blobs.len() - 1) as u32),
-                    None,
-                )
+            Shape::Superellipsoid { .. } | Shape::Isosurface(_) | Shape::Blob(_) => {
+                return self.field_shape(shape);
             }
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
@@ -514,6 +515,32 @@ impl Builder {
             | Shape::Merge(_)
             | Shape::Intersection(_)
             | Shape::Difference(_) => return None,
+        })
+    }
+
+    /// Shapes defined by a field (a function of the point) and its threshold.
+    fn field_shape(&mut self, shape: &Shape) -> Option<(ShapeKind, Option<Transform>)> {
+        Some(match *shape {
+            Shape::Superellipsoid {
+                east_west,
+                north_south,
+            } => (
+                ShapeKind::Superellipsoid(Superellipsoid::new(east_west, north_south)),
+                None,
+            ),
+            Shape::Isosurface(ref iso) => {
+                self.world.tables.isosurfaces.push(iso_data(iso));
+                let i = self.world.tables.isosurfaces.len() - 1;
+                (ShapeKind::Isosurface(i as u32), None)
+            }
+            Shape::Blob(ref blob) => {
+                self.world.tables.blobs.push(blob_data(blob)?);
+                (
+                    ShapeKind::Blob((self.world.tables.blobs.len() - 1) as u32),
+                    None,
+                )
+            }
+            _ => return None,
         })
     }
 

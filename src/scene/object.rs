@@ -78,6 +78,7 @@ pub enum Shape {
         north_south: f64,
     },
     Blob(Blob),
+    Isosurface(Box<Isosurface>),
     Union(Vec<Object>),
     /// A union without the interior surfaces.
     Merge(Vec<Object>),
@@ -123,6 +124,19 @@ pub struct Mesh {
     pub triangles: Vec<MeshTriangle>,
     /// A direction for the inside test (ray parity); without it a mesh has no inside.
     pub inside_vector: Option<DVec3>,
+}
+
+/// `isosurface { function { ... } }`: where the function equals `threshold` inside the
+/// container; inside is below the threshold. POV-Ray's defaults: box { -1, 1 },
+/// threshold 0, accuracy 0.001, max_gradient 1.1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Isosurface {
+    pub function: std::sync::Arc<crate::function::Program>,
+    pub container: crate::geometry::Container,
+    pub threshold: f64,
+    pub accuracy: f64,
+    pub max_gradient: f64,
+    pub open: bool,
 }
 
 /// POV-Ray's blob: the surface where the summed field of the components equals

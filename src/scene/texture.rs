@@ -139,6 +139,8 @@ pub enum PatternKind {
     Boxed,
     /// `density_file df3 "file" [interpolate k]`: a voxel grid over the unit cube.
     DensityFile(std::sync::Arc<VoxelGrid>),
+    /// `function { ... }`: the function's value at the point, wrapped as gradient's is.
+    Function(std::sync::Arc<crate::function::Program>),
     /// `pigment_pattern { ... }`: the grey value (0.297 r + 0.589 g + 0.114 b) of a pigment.
     PigmentPattern(Box<Pigment>),
 }

@@ -125,6 +125,10 @@ fn shape_world(name: &str) -> World {
             b.tables.lathes.push(LatheData::new(&segments));
             ShapeKind::Lathe(0)
         }
+        "isosurface" => {
+            b.tables.isosurfaces.push(bumpy_isosurface());
+            ShapeKind::Isosurface(0)
+        }
         _ => ShapeKind::Sphere {
             center: DVec3::ZERO,
             radius: 1.0,
@@ -135,6 +139,66 @@ fn shape_world(name: &str) -> World {
     let item = b.primitive(shape, &tilt, 0, 0);
     b.add_top(item);
     b.build()
+}
+
+/// A unit sphere's distance with bumps of 0.1 (max_gradient 2), in a sphere of 1.2: a
+/// typical scene isosurface.
+fn bumpy_isosurface() -> crate::geometry::IsoData {
+    use crate::function::{Expr, Internal, Math1, Math2, compile};
+    let arg = |i| Box::new(Expr::Arg(i));
+    let sin8 = |i| {
+        let scaled = Expr::Math2(Math2::Mul, Box::new(Expr::Const(8.0)), arg(i));
+        Box::new(Expr::Math1(Math1::Sin, Box::new(scaled)))
+    };
+    let bumps = Expr::Math2(
+        Math2::Mul,
+        Box::new(Expr::Const(0.1)),
+        Box::new(Expr::Math2(Math2::Mul, sin8(0), sin8(1))),
+    );
+    let sphere = Expr::Internal(
+        Internal::Sphere,
+        vec![Expr::Arg(0), Expr::Arg(1), Expr::Arg(2), Expr::Const(1.0)],
+    );
+    let f = Expr::Math2(Math2::Add, Box::new(sphere), Box::new(bumps));
+    crate::geometry::IsoData {
+        function: std::sync::Arc::new(compile(&f, 3).expect("a small function")),
+        container: crate::geometry::Container::Sphere {
+            center: DVec3::ZERO,
+            radius: 1.2,
+        },
+        threshold: 0.0,
+        accuracy: 0.001,
+        max_gradient: 2.0,
+        open: false,
+        steepest: Default::default(),
+    }
+}
+
+/// Evaluations per second of x*x + y*y + z*z (ten operations) on one thread.
+fn function_rate() -> f64 {
+    use crate::function::{Expr, Math2, compile};
+    let sq = |i| {
+        Box::new(Expr::Math2(
+            Math2::Mul,
+            Box::new(Expr::Arg(i)),
+            Box::new(Expr::Arg(i)),
+        ))
+    };
+    let f = Expr::Math2(
+        Math2::Add,
+        Box::new(Expr::Math2(Math2::Add, sq(0), sq(1))),
+        sq(2),
+    );
+    let program = compile(&f, 3).expect("a small function");
+    let n = 4_000_000;
+    let start = Instant::now();
+    let mut sum = 0.0;
+    for i in 0..n {
+        let t = f64::from(i) * 1e-6;
+        sum += program.eval(&[t, 1.0 - t, 0.5 * t]);
+    }
+    std::hint::black_box(sum);
+    f64::from(n) / start.elapsed().as_secs_f64()
 }
 
 struct RayFigures {
@@ -264,6 +328,23 @@ fn side_by_side(side: usize, options: &BenchOptions, dir: &Path) -> Result<(f64,
 }
 
 /// Runs the benchmark and returns its report as text.
+/// The function line and a line per shape, beside one sphere.
+fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
+    line(format!(
+        "function: {:.1} M evaluations/s of a ten-operation function (x*x + y*y + z*z), one thread",
+        function_rate() * 1e-6
+    ));
+    for name in ["sphere", "prism", "sor", "lathe", "isosurface"] {
+        let figures = trace(&shape_world(name), rays);
+        line(format!(
+            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe; isosurface: bumpy sphere, max_gradient 2)",
+            figures.camera_rate,
+            figures.shadow_rate,
+            100.0 * figures.hit_fraction,
+        ));
+    }
+}
+
 pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
     let mut report = String::new();
     let mut line = |s: String| {
@@ -327,15 +408,7 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
             last.2 / first.2
         ));
     }
-    for name in ["sphere", "prism", "sor", "lathe"] {
-        let figures = trace(&shape_world(name), options.rays);
-        line(format!(
-            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe)",
-            figures.camera_rate,
-            figures.shadow_rate,
-            100.0 * figures.hit_fraction,
-        ));
-    }
+    shape_lines(options.rays, &mut line);
     if options.povray_counts.is_empty() {
         return report;
     }

@@ -231,7 +231,7 @@ impl Evaluator<'_> {
         self.postfix()
     }
 
-    fn postfix(&mut self) -> R<(Value, Span)> {
+    pub(super) fn postfix(&mut self) -> R<(Value, Span)> {
         let (mut v, mut span) = self.primary()?;
         loop {
             let tok = self.peek_operator()?;
@@ -401,6 +401,9 @@ impl Evaluator<'_> {
         if let Some(v) = self.lookup(name) {
             let v = v.clone();
             self.next()?;
+            if let Value::Function(f) = &v {
+                return self.call_declared_function(tok, f);
+            }
             return Ok((v, span));
         }
         match functions::builtin(name) {

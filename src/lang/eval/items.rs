@@ -177,6 +177,7 @@ impl Evaluator<'_> {
                 Value::Transform(Box::new(self.transform_block()?))
             }
             "array" => self.array_value()?,
+            "function" => Value::Function(std::rc::Rc::new(self.function_value()?)),
             _ if super::keywords::is_keyword(word)
                 && !super::keywords::is_expression_keyword(word) =>
             {

@@ -17,6 +17,7 @@ mod directives;
 mod expr;
 mod fog;
 mod functions;
+mod isosurface;
 mod items;
 mod keywords;
 mod media;
@@ -24,6 +25,7 @@ mod objects;
 mod stream;
 mod sweeps;
 mod texture;
+mod user_functions;
 pub mod value;
 
 use std::path::PathBuf;

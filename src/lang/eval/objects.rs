@@ -64,6 +64,7 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     }),
     ("superellipsoid", |ev, _| kept(ev.superellipsoid()?)),
     ("blob", |ev, kw| kept(ev.blob_items(kw)?)),
+    ("isosurface", |ev, kw| kept(ev.isosurface_items(kw)?)),
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
@@ -82,7 +83,6 @@ pub fn is_known_unsupported_shape(word: &str) -> bool {
         "mesh2"
             | "text"
             | "height_field"
-            | "isosurface"
             | "parametric"
             | "julia_fractal"
             | "bicubic_patch"

@@ -22,7 +22,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "cells",
     "crackle",
     "facets",
-    "function",
     "image_pattern",
     "julia",
     "magnet",
@@ -66,6 +65,7 @@ const PATTERNS: &[&str] = &[
     "cylindrical",
     "boxed",
     "pigment_pattern",
+    "function",
 ];
 
 /// What a pattern block holds while it is read: the pattern and where its modifiers go.
@@ -333,6 +333,10 @@ impl Evaluator<'_> {
             "cylindrical" => PatternKind::Cylindrical,
             "boxed" => PatternKind::Boxed,
             "density_file" => PatternKind::DensityFile(std::sync::Arc::new(self.density_file()?)),
+            "function" => {
+                let span = self.peek()?.span;
+                PatternKind::Function(self.point_function(span)?)
+            }
             _ => {
                 // pigment_pattern
                 let pig = self.pigment_body_from_keyword()?;

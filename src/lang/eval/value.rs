@@ -99,6 +99,7 @@ pub enum Value {
     Fog(Box<crate::scene::Fog>),
     Media(Box<crate::scene::Media>),
     Array(Rc<std::cell::RefCell<ArrayValue>>),
+    Function(Rc<crate::function::Function>),
     /// A declaration that used a feature penumbra lacks. Include files declare many things
     /// a scene never uses, so the error waits until the identifier is used.
     Unsupported(Rc<super::super::diagnostics::Diagnostic>),
@@ -135,6 +136,7 @@ impl Value {
             Value::Fog(_) => "a fog",
             Value::Media(_) => "a media",
             Value::Array(_) => "an array",
+            Value::Function(_) => "a function",
             Value::Unsupported(_) => "an unsupported value",
         }
     }

@@ -1,0 +1,94 @@
+//! POV-Ray's numbered internal functions (`function { internal(N) }`, which functions.inc
+//! names `f_sphere` and so on). Each formula was fitted to values POV-Ray 3.7 prints with
+//! `#debug` for the installed functions.inc; the tests in ../tests.rs hold those values.
+//! The numbers not listed here are refused with a positioned error when used.
+
+use glam::DVec3;
+
+use crate::appearance::noise::noise_with;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Internal {
+    /// 17: sqrt((P0 x)² + (P1 y)² + (P2 z)²) (POV-Ray subtracts nothing: the scenes use
+    /// threshold 1).
+    Ellipsoid,
+    /// 47: the polar angle from +y, acos(y / r).
+    Ph,
+    /// 57: the distance from the origin.
+    R,
+    /// 60: a box of half-sizes P1..P3 with edges rounded by P0; inside, it is -P0 at most
+    /// (not a signed distance): length(max(|p| - (s - r), 0)) - r, measured 1e-6 lower.
+    RoundedBox,
+    /// 61: distance from the origin minus the radius P0.
+    Sphere,
+    /// 68: 1 - ((|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n))^(n/2), e = P0, n = P1:
+    /// positive inside, unlike the others.
+    Superellipsoid,
+    /// 69: the azimuth atan2(x, z).
+    Th,
+    /// 70: torus around y, major radius P0, minor radius P1.
+    Torus,
+    /// 76: POV-Ray's noise in [0, 1] (the default generator, 2).
+    Noise3d,
+    /// 78: noise under the generator P0.
+    NoiseGenerator,
+}
+
+/// Number, internal function and its parameter count (x, y, z included).
+const TABLE: &[(u32, Internal, usize)] = &[
+    (17, Internal::Ellipsoid, 6),
+    (47, Internal::Ph, 3),
+    (57, Internal::R, 3),
+    (60, Internal::RoundedBox, 7),
+    (61, Internal::Sphere, 4),
+    (68, Internal::Superellipsoid, 5),
+    (69, Internal::Th, 3),
+    (70, Internal::Torus, 5),
+    (76, Internal::Noise3d, 3),
+    (78, Internal::NoiseGenerator, 4),
+];
+
+/// Rounded boxes read this much lower than the formula in POV-Ray's output.
+const ROUNDED_BOX_OFFSET: f64 = 1e-6;
+
+impl Internal {
+    pub fn numbered(n: u32) -> Option<Internal> {
+        TABLE.iter().find(|e| e.0 == n).map(|e| e.1)
+    }
+
+    pub fn arity(self) -> usize {
+        TABLE.iter().find(|e| e.1 == self).map_or(3, |e| e.2)
+    }
+
+    pub fn eval(self, a: &[f64]) -> f64 {
+        let p = DVec3::new(a[0], a[1], a[2]);
+        match self {
+            Internal::Ellipsoid => (p * DVec3::new(a[3], a[4], a[5])).length(),
+            Internal::Ph => {
+                let r = p.length();
+                if r == 0.0 { 0.0 } else { (p.y / r).acos() }
+            }
+            Internal::R => p.length(),
+            Internal::RoundedBox => {
+                let r = a[3];
+                let q = p.abs() - (DVec3::new(a[4], a[5], a[6]) - r);
+                q.max(DVec3::ZERO).length() - r - ROUNDED_BOX_OFFSET
+            }
+            Internal::Sphere => p.length() - a[3],
+            Internal::Superellipsoid => superellipsoid(p, a[3], a[4]),
+            Internal::Th => p.x.atan2(p.z),
+            Internal::Torus => {
+                let ring = p.x.hypot(p.z) - a[3];
+                ring.hypot(p.y) - a[4]
+            }
+            Internal::Noise3d => noise_with(p, 2),
+            Internal::NoiseGenerator => noise_with(p, a[3] as u8),
+        }
+    }
+}
+
+fn superellipsoid(p: DVec3, e: f64, n: f64) -> f64 {
+    let p = p.abs();
+    let xy = (p.x.powf(2.0 / e) + p.y.powf(2.0 / e)).powf(e / n);
+    1.0 - (xy + p.z.powf(2.0 / n)).powf(n / 2.0)
+}
