@@ -442,6 +442,9 @@ fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
                 r.stats.rays.total()
             );
         }
+        for note in &r.stats.notes {
+            eprintln!("warning: {note}");
+        }
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -31,6 +31,8 @@ pub struct IsoData {
     /// The steepest gradient the search met, as f64 bits (positive floats order as
     /// their bits do), for POV-Ray's warning when it exceeds `max_gradient`.
     pub steepest: Arc<AtomicU64>,
+    /// Where the scene declared it (file:line:column), for the warning.
+    pub origin: Arc<str>,
 }
 
 impl PartialEq for IsoData {

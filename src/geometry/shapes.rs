@@ -31,6 +31,21 @@ pub struct ShapeTables {
 }
 
 impl ShapeTables {
+    /// POV-Ray's warning for each isosurface whose function was steeper than its
+    /// max_gradient, where roots may have been missed.
+    pub fn gradient_notes(&self) -> Vec<String> {
+        self.isosurfaces
+            .iter()
+            .filter_map(|iso| {
+                let g = iso.gradient_exceeded()?;
+                Some(format!(
+                    "{}: the maximum gradient found was {g:.3}, but max_gradient of the isosurface was set to {:.3}; the surface may have holes",
+                    iso.origin, iso.max_gradient
+                ))
+            })
+            .collect()
+    }
+
     /// Bytes held by the tables.
     pub fn memory_bytes(&self) -> usize {
         use std::mem::size_of;

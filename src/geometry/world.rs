@@ -273,6 +273,11 @@ impl World {
 
     /// Bytes held by the geometry's arrays (primitives, transforms, shape tables' headers,
     /// CSG nodes, BVH nodes and item list), for the benchmark's memory per object.
+    /// Warnings about isosurfaces steeper than their max_gradient, after a render.
+    pub fn gradient_notes(&self) -> Vec<String> {
+        self.tables.gradient_notes()
+    }
+
     pub fn memory_bytes(&self) -> usize {
         use std::mem::size_of;
         self.primitives.capacity() * size_of::<Primitive>()

@@ -100,6 +100,9 @@ pub struct RenderStats {
     pub wall: Duration,
     pub samples: u64,
     pub rays: RayCounts,
+    /// What the render noticed about the scene, as POV-Ray's shutdown warnings do (an
+    /// isosurface steeper than its max_gradient).
+    pub notes: Vec<String>,
 }
 
 impl RenderStats {
@@ -217,6 +220,7 @@ pub fn render(
         wall: start.elapsed(),
         samples,
         rays,
+        notes: scene.world.gradient_notes(),
     };
     Ok((film, stats))
 }

@@ -171,6 +171,7 @@ fn iso_data(iso: &crate::scene::Isosurface) -> crate::geometry::IsoData {
         max_gradient: iso.max_gradient,
         open: iso.open,
         steepest: Default::default(),
+        origin: iso.origin.clone(),
     }
 }
 

@@ -137,6 +137,8 @@ pub struct Isosurface {
     pub accuracy: f64,
     pub max_gradient: f64,
     pub open: bool,
+    /// file:line:column of the keyword, for warnings after the render.
+    pub origin: std::sync::Arc<str>,
 }
 
 /// POV-Ray's blob: the surface where the summed field of the components equals

@@ -171,6 +171,7 @@ fn bumpy_isosurface() -> crate::geometry::IsoData {
         max_gradient: 2.0,
         open: false,
         steepest: Default::default(),
+        origin: "bench".into(),
     }
 }
 

@@ -37,6 +37,10 @@ impl Evaluator<'_> {
             accuracy: 0.001,
             max_gradient: 1.1,
             open: false,
+            origin: self.files.locate(kw.span).map_or_else(
+                || "isosurface".into(),
+                |l| format!("{}:{}:{}", l.file, l.line, l.column).into(),
+            ),
         };
         while self.isosurface_item(&mut iso)? {}
         self.check_isosurface(&iso, kw.span)?;

@@ -129,8 +129,8 @@ impl Evaluator<'_> {
                 Expr::Pattern(Box::new(pattern), (0..3).map(Expr::Arg).collect())
             }
             Some("internal") => {
-                self.next()?;
-                let f = self.internal_number()?;
+                let kw = self.next()?;
+                let f = self.internal_number(kw.span)?;
                 let n = f.arity() as u8;
                 return self.compiled(
                     &Expr::Internal(f, (0..n).map(Expr::Arg).collect()),
@@ -154,9 +154,8 @@ impl Evaluator<'_> {
     }
 
     /// `(N)` after `internal`.
-    fn internal_number(&mut self) -> R<Internal> {
+    fn internal_number(&mut self, start: Span) -> R<Internal> {
         self.expect(Punct::LParen, "after `internal`")?;
-        let start = self.peek()?.span;
         let n = self.float()?;
         let close = self.expect(Punct::RParen, "to close `internal(`")?;
         Internal::numbered(n as u32).ok_or_else(|| {
