@@ -34,6 +34,9 @@ struct SceneArgs {
     /// Folders to search for #include files (after the scene's own folder).
     #[arg(short = 'L', long = "include-path", value_name = "DIR")]
     include_paths: Vec<PathBuf>,
+    /// The one folder `#fopen ... write` may write in; without it, scenes cannot write.
+    #[arg(long = "allow-write", value_name = "DIR")]
+    allow_write: Option<PathBuf>,
 }
 
 #[derive(Subcommand)]
@@ -413,6 +416,7 @@ fn render(args: RenderArgs) -> Result<ExitCode, String> {
         base: args.render_options(),
         skip_unsupported: args.skip_unsupported,
         max_memory: args.max_memory,
+        allow_write: args.scene_args.allow_write.clone(),
     };
     render_job(&job, &settings)
 }
@@ -696,6 +700,7 @@ fn load_options(args: &SceneArgs, width: u32, height: u32, max_memory: Option<u6
         include_paths: args.include_paths.clone(),
         image_width: width,
         image_height: height,
+        allow_write: args.allow_write.clone(),
         ..LoadOptions::default()
     }
 }

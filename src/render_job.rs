@@ -42,6 +42,8 @@ pub struct JobSettings {
     pub skip_unsupported: bool,
     /// The evaluator's memory budget (`--max-memory`); `None`: the default.
     pub max_memory: Option<u64>,
+    /// `--allow-write DIR` for `#fopen ... write`.
+    pub allow_write: Option<PathBuf>,
 }
 
 impl JobProgress for () {
@@ -201,6 +203,7 @@ impl FrameRenderer<'_> {
             image_height: self.job.height,
             clock,
             max_memory: self.settings.max_memory,
+            allow_write: self.settings.allow_write.clone(),
         };
         let loaded = load_scene_with(&self.job.scene, &load, self.settings.skip_unsupported)
             .map_err(|d| d.to_string())?;

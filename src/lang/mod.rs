@@ -34,6 +34,9 @@ pub struct LoadOptions {
     /// Bytes the scene's objects and values may take (`--max-memory`); `None`: the default,
     /// [`default_memory_budget`].
     pub max_memory: Option<u64>,
+    /// `--allow-write DIR`: the folder `#fopen ... write` may write in; `None`: writing is
+    /// refused.
+    pub allow_write: Option<PathBuf>,
 }
 
 /// What the animation identifiers read: `clock`, `clock_delta`, `clock_on`,
@@ -78,6 +81,7 @@ impl Default for LoadOptions {
             image_height: 600,
             clock: AnimationClock::default(),
             max_memory: None,
+            allow_write: None,
         }
     }
 }
@@ -241,6 +245,7 @@ fn evaluate(
     );
     ev.skip_unsupported = skip_unsupported;
     ev.clock = options.clock;
+    ev.allow_write = options.allow_write.clone();
     ev.set_memory_budget(options.max_memory.unwrap_or_else(default_memory_budget));
     for (name, value) in &options.declares {
         ev.declare_global(name, eval::value::Value::Float(*value));

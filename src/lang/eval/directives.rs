@@ -57,12 +57,10 @@ impl Evaluator<'_> {
             "debug" | "warning" | "error" => self.message_directive(name, span),
             "undef" => self.undef(),
             "default" => self.default_directive(),
-            "fopen" | "fclose" | "read" | "write" => Err(self.err(
-                span,
-                format!(
-                    "unsupported: `#{name}` is refused: a scene may not open, read or write files"
-                ),
-            )),
+            "fopen" => self.fopen(),
+            "fclose" => self.fclose(),
+            "read" => self.read_directive(),
+            "write" => self.write_directive(),
             "render" | "statistics" => {
                 Err(self.err(span, format!("unsupported: `#{name}` is not supported yet")))
             }
@@ -802,6 +800,14 @@ impl Evaluator<'_> {
         if escapes_folder(name) {
             return None;
         }
+        self.include_dirs()
+            .into_iter()
+            .map(|d| d.join(name))
+            .find(|p| self.sources.exists(p))
+    }
+
+    /// The folders includes (and data files) are looked up in, in order.
+    pub(super) fn include_dirs(&self) -> Vec<PathBuf> {
         let mut dirs = Vec::new();
         if let Some(file) = self.current_file().and_then(|f| self.files.name(f)) {
             dirs.push(
@@ -813,15 +819,13 @@ impl Evaluator<'_> {
         }
         dirs.extend(self.include_paths.iter().cloned());
         dirs.push(PathBuf::from("/usr/share/povray-3.7/include"));
-        dirs.into_iter()
-            .map(|d| d.join(name))
-            .find(|p| self.sources.exists(p))
+        dirs
     }
 }
 
 /// Whether an include name could reach outside the folder it is looked up in: absolute
 /// paths, and `..` that climbs above the start. Scenes must not read arbitrary files.
-fn escapes_folder(name: &str) -> bool {
+pub(super) fn escapes_folder(name: &str) -> bool {
     let path = std::path::Path::new(name);
     let mut depth = 0i64;
     for c in path.components() {

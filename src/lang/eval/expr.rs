@@ -548,7 +548,9 @@ impl Evaluator<'_> {
         if matches!(b.eval, functions::Eval::Defined) {
             let id = self.raw_next();
             let close = self.expect(Punct::RParen, "to close `defined(`")?;
-            let defined = id.ident().is_some_and(|n| self.lookup(n).is_some());
+            let defined = id
+                .ident()
+                .is_some_and(|n| self.lookup(n).is_some() || self.is_open_data_file(n));
             return Ok((
                 Value::Float(f64::from(u8::from(defined))),
                 tok.span.join(close.span),

@@ -13,6 +13,7 @@
 
 mod blob;
 pub mod budget;
+mod data_files;
 mod directives;
 mod expr;
 mod fog;
@@ -85,6 +86,10 @@ pub struct Evaluator<'w> {
     pub clock: crate::lang::AnimationClock,
     /// What the scene's objects and values take, against the memory budget.
     budget: budget::Budget,
+    /// Files opened with `#fopen`, by identifier.
+    data_files: std::collections::HashMap<Rc<str>, data_files::DataFile>,
+    /// `--allow-write DIR`: the one folder `#fopen ... write` may write in.
+    pub allow_write: Option<PathBuf>,
 }
 
 impl<'w> Evaluator<'w> {
@@ -118,6 +123,8 @@ impl<'w> Evaluator<'w> {
             debug_output: String::new(),
             clock: crate::lang::AnimationClock::default(),
             budget: budget::Budget::new(budget::default_memory_budget()),
+            data_files: std::collections::HashMap::new(),
+            allow_write: None,
         }
     }
 
@@ -144,7 +151,7 @@ impl<'w> Evaluator<'w> {
         loop {
             let tok = self.peek()?;
             if tok.kind == TokenKind::Eof {
-                return Ok(());
+                return self.close_data_files(tok.span);
             }
             self.item()?;
         }
