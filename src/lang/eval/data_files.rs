@@ -304,9 +304,13 @@ impl Evaluator<'_> {
             return Err(self.expected("a file identifier", &id));
         };
         let mut out = String::new();
-        while self.eat(Punct::Comma)? {
+        // html_gen.inc writes `#write(File Header1)`: the commas are optional, as POV-Ray
+        // reads them.
+        self.eat(Punct::Comma)?;
+        while !self.peek()?.is_punct(Punct::RParen) {
             let (v, s) = self.expr()?;
             write_value(&mut out, &v).map_err(|m| self.err(s, m))?;
+            self.eat(Punct::Comma)?;
         }
         self.expect(Punct::RParen, "to close `#write`")?;
         match self.data_files.get_mut(&*handle) {

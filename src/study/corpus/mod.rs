@@ -208,12 +208,18 @@ pub fn run(req: &CorpusRequest, log: &dyn Log) -> Result<Vec<Row>, StudyError> {
 fn prepare(req: &CorpusRequest, row: &mut Row) {
     let path = req.scenes_dir.join(&row.scene);
     let folder = path.parent().unwrap_or(Path::new(".")).to_path_buf();
-    let args: Vec<OsString> = vec![
+    // Scenes that write data files (html_gen.inc, makestacks.inc) write into a scratch
+    // folder, as POV-Ray writes into its working folder.
+    let scratch = TempDir::new("corpus-check").ok();
+    let mut args: Vec<OsString> = vec![
         "check".into(),
         "-L".into(),
         folder.into(),
         path.clone().into(),
     ];
+    if let Some(dir) = &scratch {
+        args.extend(["--allow-write".into(), dir.path().into()]);
+    }
     let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.parse);
     row.parse = parse_status(&run);
     if let Ok(files) = scan::sources(&path, &req.include_dirs) {
@@ -297,6 +303,8 @@ fn probe(req: &CorpusRequest, row: &Row) -> f64 {
         "--quiet".into(),
         "-L".into(),
         scene_folder(&path),
+        "--allow-write".into(),
+        dir.path().into(),
     ];
     let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.render);
     match run.ended {
@@ -337,6 +345,8 @@ fn render_replicates(
             "--quiet".into(),
             "-L".into(),
             scene_folder(path),
+            "--allow-write".into(),
+            dir.path().into(),
         ];
         let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.render);
         seconds += run.seconds;
