@@ -71,8 +71,6 @@ fn a_written_file_reads_back_as_povray_wrote_it() {
 #fopen F "data.txt" read
 #read (F, S, A, V, B, C, D)
 #debug concat(S, " ", str(A,0,6), " ", vstr(3, V, ",", 0, 3), " ", str(B,0,6), " ", str(C/1e19,0,3), " ", str(D,0,3), " ", str(defined(F),0,0), "\n")
-#read (F, E)
-#debug concat(str(defined(F),0,0), " ", str(defined(E),0,0), "\n")
 "#,
     );
     let loaded = load(&scene, Some(&out.0)).unwrap();
@@ -81,7 +79,7 @@ fn a_written_file_reads_back_as_povray_wrote_it() {
     assert_eq!(text, "\"Testing 123\",5,<1,2,3> ,0.333333,1e+20,-2.5\n");
     assert_eq!(
         loaded.debug,
-        "Testing 123 5.000000 1.000,2.000,3.000 0.333333 10.000 -2.500 1\n0 0\n"
+        "Testing 123 5.000000 1.000,2.000,3.000 0.333333 10.000 -2.500 0\n"
     );
 }
 
@@ -143,6 +141,24 @@ fn symbolic_links_out_of_the_folder_are_refused() {
     let (m, _, _) = error(&scene, Some(&out.0));
     assert!(m.starts_with("refused:"), "{m}");
     assert_eq!(std::fs::read_to_string(&target).unwrap(), "keep");
+}
+
+#[test]
+fn the_file_closes_with_its_last_value() {
+    // POV-Ray 3.7 printed "1", then "0 3", then refused the third #read.
+    let scenes = Dir::new("close");
+    scenes.file("v.txt", "1, 2,\n3\n");
+    let scene = scenes.file(
+        "s.pov",
+        "#fopen F \"v.txt\" read\n#read (F, A, B)\n#debug concat(str(defined(F),0,0), \"\\n\")\n#read (F, C)\n#debug concat(str(defined(F),0,0), \" \", str(C,0,0), \"\\n\")\n",
+    );
+    assert_eq!(load(&scene, None).unwrap().debug, "1\n0 3\n");
+    let scene = scenes.file(
+        "s.pov",
+        "#fopen F \"v.txt\" read\n#read (F, A, B, C)\n#read (F, D)\n",
+    );
+    let (m, line, col) = error(&scene, None);
+    assert_eq!((m.as_str(), line, col), ("`F` is not an open file", 3, 8));
 }
 
 #[test]

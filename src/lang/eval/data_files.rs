@@ -185,52 +185,55 @@ impl Evaluator<'_> {
         })
     }
 
-    /// `#read (Name, A, B, ...)`: at the end of the file, the file closes and the rest of
-    /// the identifiers keep what they had.
+    /// `#read (Name, A, B, ...)`. As in POV-Ray, the file closes as soon as its last value
+    /// is read (so `defined(Name)` is false right after), and reading a closed file is an
+    /// error; identifiers past the end keep what they had.
     pub(super) fn read_directive(&mut self) -> R<()> {
         self.expect(Punct::LParen, "after `#read`")?;
         let id = self.raw_next();
         let Some(handle) = id.ident().map(Rc::<str>::from) else {
             return Err(self.expected("a file identifier", &id));
         };
-        while self.eat(Punct::Comma)? {
+        if !self.data_files.contains_key(&handle) {
+            return Err(self.err(id.span, format!("`{handle}` is not an open file")));
+        }
+        self.eat(Punct::Comma)?;
+        while !self.peek()?.is_punct(Punct::RParen) {
             let var = self.raw_next();
             let Some(name) = var.ident().map(Rc::<str>::from) else {
                 return Err(self.expected("an identifier to read into", &var));
             };
-            match self.next_data_value(&handle, id.span)? {
-                Some(v) => self.assign(name, v, false),
-                None => {
-                    self.data_files.remove(&handle);
-                }
+            if let Some(v) = self.next_data_value(&handle, id.span)? {
+                self.assign(name, v, false);
             }
+            self.eat(Punct::Comma)?;
         }
         self.expect(Punct::RParen, "to close `#read`")?;
         Ok(())
     }
 
-    /// The next value; values are separated by commas, also from one `#read` to the next
-    /// (POV-Ray reads nothing after a value that no comma follows).
+    /// The next value, or `None` once the file is closed. Values are separated by commas,
+    /// also from one `#read` to the next: POV-Ray reads nothing after a value that no comma
+    /// follows.
     fn next_data_value(&mut self, handle: &str, span: Span) -> R<Option<Value>> {
-        let Some(DataFile::Read { tokens, pos }) = self.data_files.get_mut(handle) else {
-            return match self.data_files.contains_key(handle) {
-                true => Err(self.err(span, format!("`{handle}` is open for writing, not reading"))),
-                false => Ok(None),
-            };
-        };
-        let tokens = tokens.clone();
-        let mut at = *pos;
-        if at > 0 {
-            if !tokens.get(at).is_some_and(|t| t.is_punct(Punct::Comma)) {
-                return Ok(None);
+        let (tokens, at) = match self.data_files.get(handle) {
+            Some(DataFile::Read { tokens, pos }) => (tokens.clone(), *pos),
+            Some(DataFile::Write { .. }) => {
+                return Err(self.err(span, format!("`{handle}` is open for writing, not reading")));
             }
-            at += 1;
-        }
-        let Some((value, next)) = self.data_value(&tokens, at)? else {
+            None => return Ok(None),
+        };
+        let Some((value, mut next)) = self.data_value(&tokens, at)? else {
+            self.data_files.remove(handle);
             return Ok(None);
         };
-        // The separator after a value belongs to the next read.
-        if let Some(DataFile::Read { pos, .. }) = self.data_files.get_mut(handle) {
+        let comma = tokens.get(next).is_some_and(|t| t.is_punct(Punct::Comma));
+        if comma {
+            next += 1;
+        }
+        if !comma || next >= tokens.len() {
+            self.data_files.remove(handle);
+        } else if let Some(DataFile::Read { pos, .. }) = self.data_files.get_mut(handle) {
             *pos = next;
         }
         Ok(Some(value))
@@ -398,6 +401,11 @@ fn format_g(x: f64) -> String {
 
 /// Whether `path` (once links are followed) is inside `dir`.
 fn inside_folder(dir: &Path, path: &Path) -> Result<(), &'static str> {
+    let dir = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
     let dir = std::fs::canonicalize(dir).map_err(|_| "is in a folder that does not exist")?;
     let real = std::fs::canonicalize(path).map_err(|_| "cannot be found")?;
     if !real.starts_with(&dir) {
