@@ -274,22 +274,136 @@ impl Search<'_> {
         true
     }
 
-    /// Bisects a sign change down to the precision of f64.
+    /// Narrows a sign change to far below `accuracy` by the Illinois variant of regula
+    /// falsi (a few evaluations where bisection needs forty), so that secondary rays
+    /// leave the surface cleanly.
     fn refine(&self, mut i: Interval) -> f64 {
-        for _ in 0..60 {
-            let m = 0.5 * (i.a + i.b);
-            if m <= i.a || m >= i.b {
-                break;
+        let tolerance = 1e-10 * self.iso.scale() / self.length.max(1e-300);
+        let mut side = 0i8;
+        let mut last = f64::NAN;
+        for _ in 0..48 {
+            let mut c = (i.a * i.fb - i.b * i.fa) / (i.fb - i.fa);
+            if !(c > i.a && c < i.b) {
+                c = 0.5 * (i.a + i.b);
             }
-            let fm = self.iso.value(self.ray.at(m));
-            if (fm < 0.0) == (i.fa < 0.0) {
-                i.a = m;
-                i.fa = fm;
+            let fc = self.iso.value(self.ray.at(c));
+            if fc == 0.0 || (c - last).abs() <= tolerance || i.b - i.a <= tolerance {
+                return c;
+            }
+            last = c;
+            if (fc < 0.0) == (i.fa < 0.0) {
+                i.a = c;
+                i.fa = fc;
+                if side == -1 {
+                    i.fb *= 0.5;
+                }
+                side = -1;
             } else {
-                i.b = m;
-                i.fb = fm;
+                i.b = c;
+                i.fb = fc;
+                if side == 1 {
+                    i.fa *= 0.5;
+                }
+                side = 1;
             }
         }
         0.5 * (i.a + i.b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::function::{Expr, Internal, compile};
+
+    fn unit_sphere(open: bool) -> IsoData {
+        let args = vec![Expr::Arg(0), Expr::Arg(1), Expr::Arg(2), Expr::Const(1.0)];
+        IsoData {
+            function: Arc::new(compile(&Expr::Internal(Internal::Sphere, args), 3).unwrap()),
+            container: Container::Box {
+                min: DVec3::splat(-1.5),
+                max: DVec3::splat(1.5),
+            },
+            threshold: 0.0,
+            accuracy: 0.001,
+            max_gradient: 1.1,
+            open,
+            steepest: Default::default(),
+            origin: "test".into(),
+        }
+    }
+
+    fn crossings(iso: &IsoData, ray: &Ray) -> Vec<f64> {
+        let mut out = Vec::new();
+        iso.each_hit(ray, |t| {
+            out.push(t);
+            true
+        });
+        out
+    }
+
+    #[test]
+    fn grazing_rays_find_the_sphere_to_full_precision() {
+        let iso = unit_sphere(false);
+        // Rays along z at height h: the sphere is met where z = +-sqrt(1 - h^2).
+        for h in [0.0, 0.5, 0.9, 0.99, 0.999, 0.9999] {
+            let ray = Ray::new(DVec3::new(0.0, h, -5.0), DVec3::Z);
+            let got = crossings(&iso, &ray);
+            let z = (1.0 - h * h).sqrt();
+            assert_eq!(got.len(), 2, "h = {h}: {got:?}");
+            assert!((got[0] - (5.0 - z)).abs() < 1e-9, "h = {h}: {got:?}");
+            assert!((got[1] - (5.0 + z)).abs() < 1e-9, "h = {h}: {got:?}");
+        }
+        for h in [1.0001, 1.01, 1.2] {
+            let ray = Ray::new(DVec3::new(0.0, h, -5.0), DVec3::Z);
+            assert!(crossings(&iso, &ray).is_empty(), "h = {h}");
+        }
+    }
+
+    #[test]
+    fn the_container_closes_what_the_function_leaves_open() {
+        // x + 0.2 inside a box: the half-space x < -0.2 is cut by the box, whose faces are
+        // part of the shape unless `open`.
+        let mut iso = unit_sphere(false);
+        let f = Expr::Math2(
+            crate::function::Math2::Add,
+            Box::new(Expr::Arg(0)),
+            Box::new(Expr::Const(0.2)),
+        );
+        iso.function = Arc::new(compile(&f, 3).unwrap());
+        let ray = Ray::new(DVec3::new(-5.0, 0.1, 0.3), DVec3::X);
+        let got = crossings(&iso, &ray);
+        assert_eq!(got.len(), 2, "{got:?}");
+        assert!(
+            (got[0] - 3.5).abs() < 1e-12 && (got[1] - 4.8).abs() < 1e-9,
+            "{got:?}"
+        );
+        assert!(iso.inside(DVec3::new(-1.0, 0.0, 0.0)));
+        assert!(!iso.inside(DVec3::new(0.0, 0.0, 0.0)));
+        assert!(
+            !iso.inside(DVec3::new(-2.0, 0.0, 0.0)),
+            "outside the container"
+        );
+        iso.open = true;
+        let got = crossings(&iso, &ray);
+        assert_eq!(got.len(), 1, "{got:?}");
+        assert_eq!(iso.normal(ray.at(got[0])).normalize(), DVec3::X);
+    }
+
+    #[test]
+    fn a_steeper_function_than_max_gradient_is_reported() {
+        let iso = unit_sphere(false);
+        for h in [0.0, 0.3, 0.6] {
+            crossings(&iso, &Ray::new(DVec3::new(0.0, h, -5.0), DVec3::Z));
+        }
+        assert!(
+            iso.gradient_exceeded().is_none(),
+            "|grad| of a distance is 1"
+        );
+        let mut steep = unit_sphere(false);
+        steep.max_gradient = 0.5;
+        crossings(&steep, &Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z));
+        let g = steep.gradient_exceeded().expect("slope 1 against 0.5");
+        assert!(g > 0.9 && g <= 1.0 + 1e-9, "{g}");
     }
 }
