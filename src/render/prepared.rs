@@ -492,7 +492,9 @@ impl Builder {
                     Some(frame),
                 )
             }
-            Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
+            Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) | Shape::Glyph(_) => {
+                (self.spline_shape(shape)?, None)
+            }
             Shape::Superellipsoid {
                 east_west,
                 north_south,
@@ -517,7 +519,7 @@ impl Builder {
         })
     }
 
-    /// The table entry of a prism, sor or lathe (`None` for other shapes, or for points
+    /// The table entry of a prism (or a text glyph), sor or lathe (`None` for other shapes, or for points
     /// that make no shape).
     fn spline_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
         let tables = &mut self.world.tables;
@@ -531,6 +533,11 @@ impl Builder {
                     prism.conic,
                     prism.open,
                 ));
+                ShapeKind::Prism((tables.prisms.len() - 1) as u32)
+            }
+            Shape::Glyph(glyph) => {
+                let data = PrismData::new(&glyph.segments, 0.0, glyph.depth, false, false);
+                tables.prisms.push(data);
                 ShapeKind::Prism((tables.prisms.len() - 1) as u32)
             }
             Shape::Sor(sor) => {

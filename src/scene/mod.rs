@@ -9,6 +9,7 @@ mod light;
 mod media;
 mod object;
 pub mod spline;
+pub mod text;
 mod texture;
 
 pub use camera::{Camera, CameraSpec};
@@ -16,8 +17,8 @@ pub use fog::{Fog, FogKind, FogTurbulence};
 pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{
-    Blob, BlobComponent, BlobComponentKind, Lathe, Mesh, MeshTriangle, Object, ObjectFlags, Prism,
-    Shape, Sor,
+    Blob, BlobComponent, BlobComponentKind, Glyph, Lathe, Mesh, MeshTriangle, Object, ObjectFlags,
+    Prism, Shape, Sor,
 };
 pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,

@@ -608,7 +608,7 @@ impl Evaluator<'_> {
                     ev.float()?;
                 }
                 "charset" => {
-                    ev.next()?;
+                    ev.charset_utf8 = ev.next()?.is_ident("utf8");
                 }
                 "irid_wavelength" => {
                     ev.colour()?;

@@ -23,6 +23,7 @@ mod media;
 mod objects;
 mod stream;
 mod sweeps;
+mod text;
 mod texture;
 pub mod value;
 
@@ -83,6 +84,10 @@ pub struct Evaluator<'w> {
     pub clock: crate::lang::AnimationClock,
     /// What the scene's objects and values take, against the memory budget.
     budget: budget::Budget,
+    /// The fonts `text` objects read, by path: read and converted once per scene.
+    fonts: std::collections::HashMap<PathBuf, crate::scene::text::Font>,
+    /// `global_settings { charset utf8 }`: text keeps its non-ASCII characters.
+    charset_utf8: bool,
 }
 
 impl<'w> Evaluator<'w> {
@@ -116,6 +121,8 @@ impl<'w> Evaluator<'w> {
             debug_output: String::new(),
             clock: crate::lang::AnimationClock::default(),
             budget: budget::Budget::new(budget::default_memory_budget()),
+            fonts: std::collections::HashMap::new(),
+            charset_utf8: false,
         }
     }
 
