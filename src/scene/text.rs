@@ -244,6 +244,67 @@ mod tests {
         assert!((spaced[1].at - DVec2::new(-0.006 + 1.004 + 0.2, 0.4)).length() < 1e-9);
     }
 
+    /// The crossings of the line at height y (z = 0.5) with the text's sides, left to right.
+    fn crossings(f: &mut Font, text: &str, y: f64) -> Vec<f64> {
+        use crate::geometry::{PrismData, Ray};
+        let mut xs = Vec::new();
+        for g in f.layout(text, DVec2::ZERO) {
+            let prism = PrismData::new(&g.segments, 0.0, 1.0, false, false);
+            // Text space (x, y, z) is prism space (x - at.x, z, at.y - y).
+            let o = glam::DVec3::new(-g.at.x - 1.0, 0.5, g.at.y - y);
+            prism.each_hit(&Ray::new(o, glam::DVec3::X), |t| xs.push(t - 1.0));
+        }
+        xs.sort_by(f64::total_cmp);
+        xs
+    }
+
+    /// POV-Ray's `trace` across the glyphs (povray 3.7.0.10, timrom.ttf, thickness 1):
+    /// every wall where povray finds it, to its printing precision and trace's step.
+    #[test]
+    fn walls_where_povray_traces_them() {
+        let Some(mut f) = font("timrom.ttf") else {
+            return;
+        };
+        let cases: [(&str, f64, &[f64]); 4] = [
+            (
+                "AV",
+                0.3,
+                &[
+                    0.179907, 0.232078, 0.433569, 0.541413, 0.779753, 0.888354, 1.023019,
+                ],
+            ),
+            (
+                "VA",
+                0.3,
+                &[
+                    0.222749, 0.331350, 0.466023, 0.513975, 0.759903, 0.812074, 1.013573,
+                ],
+            ),
+            (
+                "To",
+                0.2,
+                &[0.232005, 0.336005, 0.571064, 0.667508, 0.918992, 1.009040],
+            ),
+            (
+                "T o",
+                0.2,
+                &[0.232005, 0.336005, 0.867065, 0.963509, 1.214992, 1.305039],
+            ),
+        ];
+        for (text, y, want) in cases {
+            let got = crossings(&mut f, text, y);
+            assert!(got.len() >= want.len(), "{text}: {got:?}");
+            for (g, w) in got.iter().zip(want) {
+                assert!((g - w).abs() < 2e-5, "{text}: {got:?} against {want:?}");
+            }
+        }
+        assert!((crossings(&mut f, "*", 0.6)[0] - 0.012229).abs() < 2e-5);
+        let mut crystal = font("crystal.ttf").expect("installed beside timrom");
+        assert!((crossings(&mut crystal, "A", 0.3)[0] - 0.072430).abs() < 2e-5);
+        let mut logo = font("povlogo.ttf").expect("installed beside timrom");
+        assert!((crossings(&mut logo, "P", 0.5)[0] - 0.096875).abs() < 2e-5);
+    }
+
     #[test]
     fn the_logo_font_maps_through_its_macintosh_table() {
         let Some(mut f) = font("povlogo.ttf") else {
