@@ -608,7 +608,7 @@ impl Evaluator<'_> {
                     ev.float()?;
                 }
                 "charset" => {
-                    ev.charset_utf8 = ev.next()?.is_ident("utf8");
+                    ev.next()?;
                 }
                 "irid_wavelength" => {
                     ev.colour()?;

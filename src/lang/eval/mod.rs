@@ -86,8 +86,6 @@ pub struct Evaluator<'w> {
     budget: budget::Budget,
     /// The fonts `text` objects read, by path: read and converted once per scene.
     fonts: std::collections::HashMap<PathBuf, crate::scene::text::Font>,
-    /// `global_settings { charset utf8 }`: text keeps its non-ASCII characters.
-    charset_utf8: bool,
 }
 
 impl<'w> Evaluator<'w> {
@@ -122,7 +120,6 @@ impl<'w> Evaluator<'w> {
             clock: crate::lang::AnimationClock::default(),
             budget: budget::Budget::new(budget::default_memory_budget()),
             fonts: std::collections::HashMap::new(),
-            charset_utf8: false,
         }
     }
 

@@ -24,13 +24,12 @@ impl Evaluator<'_> {
         }
         let (font_name, font_span) = self.string_item("the font file's name")?;
         self.eat(Punct::Comma)?;
-        let (text, text_span) = self.string_item("the text as a string")?;
+        let (text, _) = self.string_item("the text as a string")?;
         self.eat(Punct::Comma)?;
         let thickness = self.float()?;
         self.eat(Punct::Comma)?;
         let (v, s) = self.expr()?;
         let offset = self.to_vec3(&v, s)?;
-        let text = self.in_charset(&text, text_span);
         let path = self.font(&font_name, font_span)?;
         let font = self.fonts.get_mut(&path).expect("just loaded");
         let glyphs = font.layout(&text, DVec2::new(offset.x, offset.y));
@@ -66,25 +65,6 @@ impl Evaluator<'_> {
                 format!("expected {what}, found {}", other.kind_name()),
             )),
         }
-    }
-
-    /// POV-Ray's default charset (ascii) turns each byte of a non-ASCII character into a
-    /// space, with a warning; `global_settings { charset utf8 }` keeps the characters.
-    fn in_charset(&mut self, text: &str, span: Span) -> String {
-        if self.charset_utf8 || text.is_ascii() {
-            return text.to_string();
-        }
-        self.warn(
-            span,
-            "non-ASCII characters become spaces, as in POV-Ray without \
-             `global_settings { charset utf8 }`",
-        );
-        text.chars()
-            .flat_map(|c| {
-                let n = if c.is_ascii() { 1 } else { c.len_utf8() };
-                std::iter::repeat_n(if c.is_ascii() { c } else { ' ' }, n)
-            })
-            .collect()
     }
 
     /// The font's path, loaded into the cache the first time. Found like an include file,
