@@ -492,9 +492,8 @@ impl Builder {
                     Some(frame),
                 )
             }
-            Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) | Shape::Glyph(_) => {
-                (self.spline_shape(shape)?, None)
-            }
+            Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
+            Shape::Glyph(_) => (self.spline_shape(shape)?, None),
             Shape::Superellipsoid {
                 east_west,
                 north_south,

@@ -177,6 +177,26 @@ fn text_world(carved: bool) -> Option<World> {
     Some(b.build())
 }
 
+/// The bench lines of the text worlds: rays per second, or why there are none.
+fn text_lines(rays: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    for (name, carved) in [("text", false), ("text csg", true)] {
+        let Some(world) = text_world(carved) else {
+            out.push(format!("{name:>9} skipped: timrom.ttf is not installed"));
+            continue;
+        };
+        let figures = trace(&world, rays);
+        out.push(format!(
+            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (\"Penumbra\" in timrom.ttf{})",
+            figures.camera_rate,
+            figures.shadow_rate,
+            100.0 * figures.hit_fraction,
+            if carved { ", carved out of a box" } else { "" },
+        ));
+    }
+    out
+}
+
 struct RayFigures {
     camera_rate: f64,
     shadow_rate: f64,
@@ -376,20 +396,7 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
             100.0 * figures.hit_fraction,
         ));
     }
-    for (name, carved) in [("text", false), ("text csg", true)] {
-        let Some(world) = text_world(carved) else {
-            line(format!("{name:>9} skipped: timrom.ttf is not installed"));
-            continue;
-        };
-        let figures = trace(&world, options.rays);
-        line(format!(
-            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (\"Penumbra\" in timrom.ttf{})",
-            figures.camera_rate,
-            figures.shadow_rate,
-            100.0 * figures.hit_fraction,
-            if carved { ", carved out of a box" } else { "" },
-        ));
-    }
+    text_lines(options.rays).into_iter().for_each(&mut line);
     if options.povray_counts.is_empty() {
         return report;
     }
