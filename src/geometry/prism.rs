@@ -19,17 +19,34 @@ pub struct PrismData {
     pub y_hi: f64,
     pub conic: bool,
     pub open: bool,
+    /// The bounds, a little larger: a line that misses them skips the segments. The BVH
+    /// does this for a prism on its own, but not for the glyphs of a text inside CSG.
+    reach: Aabb,
 }
 
 impl PrismData {
     pub fn new(segments: &[Segment], h1: f64, h2: f64, conic: bool, open: bool) -> PrismData {
-        PrismData {
+        let mut p = PrismData {
             profile: Profile::new(segments),
             y_lo: h1.min(h2),
             y_hi: h1.max(h2),
             conic,
             open,
-        }
+            reach: Aabb::new(DVec3::ZERO, DVec3::ZERO),
+        };
+        let b = p.bounds();
+        let pad = DVec3::splat(1e-9 * (b.max - b.min).max_element());
+        p.reach = Aabb::new(b.min - pad, b.max + pad);
+        p
+    }
+
+    /// Whether the ray's whole line (both ways) meets the padded bounds.
+    fn line_meets_reach(&self, ray: &Ray) -> bool {
+        let inv = ray.direction.recip();
+        let t1 = (self.reach.min - ray.origin) * inv;
+        let t2 = (self.reach.max - ray.origin) * inv;
+        // NaN (0 * inf, a line in a face's plane) loses to the other operand: conservative.
+        t1.min(t2).max_element() <= t1.max(t2).min_element()
     }
 
     pub fn bounds(&self) -> Aabb {
@@ -56,6 +73,9 @@ impl PrismData {
 
     /// Calls `f` with every crossing of the surface along the ray's line.
     pub fn each_hit(&self, ray: &Ray, mut f: impl FnMut(f64)) {
+        if !self.line_meets_reach(ray) {
+            return;
+        }
         let (o, d) = (ray.origin, ray.direction);
         if !self.open && d.y != 0.0 {
             for h in [self.y_lo, self.y_hi] {

@@ -308,6 +308,7 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Prism(_) => "prism",
             crate::scene::Shape::Sor(_) => "sor",
             crate::scene::Shape::Lathe(_) => "lathe",
+            crate::scene::Shape::Glyph(_) => "text glyph",
             crate::scene::Shape::Union(_) => "union",
             crate::scene::Shape::Merge(_) => "merge",
             crate::scene::Shape::Intersection(_) => "intersection",

@@ -155,11 +155,19 @@ fn string(i: &str) -> IResult<&str, TokenKind> {
             return Ok((after, TokenKind::Str(intern(&out))));
         }
         let (after, _) = char('\\').parse(rest)?;
-        let (after, c) = satisfy(|c| c != '\n').parse(after)?;
+        let (mut after, c) = satisfy(|c| c != '\n').parse(after)?;
         out.push(match c {
             'n' => '\n',
             't' => '\t',
             'r' => '\r',
+            // `\u` and four hex digits: a Unicode character, as POV-Ray reads it.
+            'u' => match after.get(..4).and_then(|h| u32::from_str_radix(h, 16).ok()) {
+                Some(code) => {
+                    after = &after[4..];
+                    char::from_u32(code).unwrap_or(char::REPLACEMENT_CHARACTER)
+                }
+                None => 'u',
+            },
             other => other,
         });
         rest = after;

@@ -506,6 +506,7 @@ impl Builder {
                 )
             }
             Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
+            Shape::Glyph(_) => (self.spline_shape(shape)?, None),
             Shape::Superellipsoid { .. } | Shape::Isosurface(_) | Shape::Blob(_) => {
                 return self.field_shape(shape);
             }
@@ -545,7 +546,7 @@ impl Builder {
         })
     }
 
-    /// The table entry of a prism, sor or lathe (`None` for other shapes, or for points
+    /// The table entry of a prism (or a text glyph), sor or lathe (`None` for other shapes, or for points
     /// that make no shape).
     fn spline_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
         let tables = &mut self.world.tables;
@@ -559,6 +560,11 @@ impl Builder {
                     prism.conic,
                     prism.open,
                 ));
+                ShapeKind::Prism((tables.prisms.len() - 1) as u32)
+            }
+            Shape::Glyph(glyph) => {
+                let data = PrismData::new(&glyph.segments, 0.0, glyph.depth, false, false);
+                tables.prisms.push(data);
                 ShapeKind::Prism((tables.prisms.len() - 1) as u32)
             }
             Shape::Sor(sor) => {

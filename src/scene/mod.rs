@@ -9,6 +9,7 @@ mod light;
 mod media;
 mod object;
 pub mod spline;
+pub mod text;
 mod texture;
 
 pub use camera::{Camera, CameraSpec};
@@ -16,7 +17,7 @@ pub use fog::{Fog, FogKind, FogTurbulence};
 pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{
-    Blob, BlobComponent, BlobComponentKind, Isosurface, Lathe, Mesh, MeshTriangle, Object,
+    Blob, BlobComponent, BlobComponentKind, Glyph, Isosurface, Lathe, Mesh, MeshTriangle, Object,
     ObjectFlags, Prism, Shape, Sor,
 };
 pub use spline::{

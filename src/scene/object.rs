@@ -71,6 +71,8 @@ pub enum Shape {
     Prism(Prism),
     Sor(Sor),
     Lathe(Lathe),
+    /// One character of a `text` object (which reads as a union of them).
+    Glyph(Glyph),
     /// `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1 in the
     /// unit cube; `east_west` is e, `north_south` is n.
     Superellipsoid {
@@ -100,6 +102,16 @@ pub struct Prism {
     pub points: Vec<DVec2>,
     /// Without its caps.
     pub open: bool,
+}
+
+/// A glyph's closed curves in a prism's x-z plane, filled by the even-odd rule and swept
+/// along y from 0 to `depth`: a prism whose curves come from a font rather than points,
+/// so they stay exact (lines and quadratics without rounding into cubics). The object's
+/// transform stands it up along z. Glyphs of a font share their curves.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Glyph {
+    pub segments: Arc<[super::Segment]>,
+    pub depth: f64,
 }
 
 /// `sor { n, <r, h> ... }`: around the y axis, r^2 a cubic spline of the height through

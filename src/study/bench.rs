@@ -202,6 +202,66 @@ fn function_rate() -> f64 {
     f64::from(n) / start.elapsed().as_secs_f64()
 }
 
+/// "Penumbra" in timrom.ttf (when installed), about three units wide: each glyph a prism in
+/// the BVH, or (`carved`) the glyphs cut out of a box, where CSG asks every glyph and only
+/// each prism's own bounds test stops a ray early.
+fn text_world(carved: bool) -> Option<World> {
+    use crate::geometry::{CsgOp, PrismData};
+    use glam::{DAffine3, DMat3, DVec2};
+    let data = std::fs::read("/usr/share/povray-3.7/include/timrom.ttf").ok()?;
+    let glyphs = crate::scene::text::Font::new(data)
+        .ok()?
+        .layout("Penumbra", DVec2::ZERO);
+    let fit = Transform::translate(DVec3::new(-2.0, -0.3, 0.0))
+        .then(&Transform::scale(DVec3::splat(0.75))?)
+        .then(&Transform::rotate(DVec3::new(-20.0, 20.0, 0.0)));
+    let stand_up = DMat3::from_cols(DVec3::X, DVec3::Z, -DVec3::Y);
+    let mut b = WorldBuilder::default();
+    let mut items = Vec::new();
+    for g in glyphs {
+        let data = PrismData::new(&g.segments, 0.0, 0.3, false, false);
+        b.tables.prisms.push(data);
+        let at = DAffine3::from_mat3_translation(stand_up, g.at.extend(0.0));
+        let place = Transform::from_affine(at)?.then(&fit);
+        let kind = ShapeKind::Prism((b.tables.prisms.len() - 1) as u32);
+        items.push(b.primitive(kind, &place, 0, 0));
+    }
+    if carved {
+        let slab = ShapeKind::Box {
+            min: DVec3::new(-0.2, -0.4, 0.15),
+            max: DVec3::new(4.2, 1.0, 0.8),
+        };
+        items.insert(0, b.primitive(slab, &fit, 0, 0));
+        let item = b.csg(CsgOp::Difference, items, false);
+        b.add_top(item);
+    } else {
+        for item in items {
+            b.add_top(item);
+        }
+    }
+    Some(b.build())
+}
+
+/// The bench lines of the text worlds: rays per second, or why there are none.
+fn text_lines(rays: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    for (name, carved) in [("text", false), ("text csg", true)] {
+        let Some(world) = text_world(carved) else {
+            out.push(format!("{name:>9} skipped: timrom.ttf is not installed"));
+            continue;
+        };
+        let figures = trace(&world, rays);
+        out.push(format!(
+            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (\"Penumbra\" in timrom.ttf{})",
+            figures.camera_rate,
+            figures.shadow_rate,
+            100.0 * figures.hit_fraction,
+            if carved { ", carved out of a box" } else { "" },
+        ));
+    }
+    out
+}
+
 struct RayFigures {
     camera_rate: f64,
     shadow_rate: f64,
@@ -410,6 +470,7 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
         ));
     }
     shape_lines(options.rays, &mut line);
+    text_lines(options.rays).into_iter().for_each(&mut line);
     if options.povray_counts.is_empty() {
         return report;
     }

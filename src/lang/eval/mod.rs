@@ -25,6 +25,7 @@ mod media;
 mod objects;
 mod stream;
 mod sweeps;
+mod text;
 mod texture;
 mod user_functions;
 pub mod value;
@@ -90,6 +91,8 @@ pub struct Evaluator<'w> {
     data_files: std::collections::HashMap<Rc<str>, data_files::DataFile>,
     /// `--allow-write DIR`: the one folder `#fopen ... write` may write in.
     pub allow_write: Option<PathBuf>,
+    /// The fonts `text` objects read, by path: read and converted once per scene.
+    fonts: std::collections::HashMap<PathBuf, crate::scene::text::Font>,
 }
 
 impl<'w> Evaluator<'w> {
@@ -125,6 +128,7 @@ impl<'w> Evaluator<'w> {
             budget: budget::Budget::new(budget::default_memory_budget()),
             data_files: std::collections::HashMap::new(),
             allow_write: None,
+            fonts: std::collections::HashMap::new(),
         }
     }
 

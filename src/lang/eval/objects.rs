@@ -65,6 +65,7 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("superellipsoid", |ev, _| kept(ev.superellipsoid()?)),
     ("blob", |ev, kw| kept(ev.blob_items(kw)?)),
     ("isosurface", |ev, kw| kept(ev.isosurface_items(kw)?)),
+    ("text", |ev, kw| kept(ev.text_items(kw)?)),
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
@@ -81,7 +82,6 @@ pub fn is_known_unsupported_shape(word: &str) -> bool {
     matches!(
         word,
         "mesh2"
-            | "text"
             | "height_field"
             | "parametric"
             | "julia_fractal"

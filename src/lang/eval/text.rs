@@ -1,0 +1,87 @@
+//! `text { ttf "font.ttf" "string" thickness, offset }`: a union of glyph prisms, one per
+//! character with an outline, each stood up so its face is at z = 0 and its back at
+//! z = thickness (see `scene::text` for where the glyphs go).
+
+use glam::{DAffine3, DMat3, DVec2, DVec3};
+
+use super::super::diagnostics::{Diagnostic, Span};
+use super::super::syntax::{Punct, Token};
+use super::Evaluator;
+use super::value::{ObjectValue, Value};
+use crate::scene::text::Font;
+use crate::scene::{Glyph, Object, Shape, Transform};
+
+type R<T> = Result<T, Diagnostic>;
+
+impl Evaluator<'_> {
+    /// The text object's items up to its modifiers.
+    pub(super) fn text_items(&mut self, kw: &Token) -> R<ObjectValue> {
+        let tok = self.next()?;
+        match tok.ident() {
+            Some("ttf") => {}
+            Some("internal") => return Err(self.unsupported(&tok, "internal fonts")),
+            _ => return Err(self.expected("`ttf` and the font file's name", &tok)),
+        }
+        let (font_name, font_span) = self.string_item("the font file's name")?;
+        self.eat(Punct::Comma)?;
+        let (text, _) = self.string_item("the text as a string")?;
+        self.eat(Punct::Comma)?;
+        let thickness = self.float()?;
+        self.eat(Punct::Comma)?;
+        let (v, s) = self.expr()?;
+        let offset = self.to_vec3(&v, s)?;
+        let path = self.font(&font_name, font_span)?;
+        let font = self.fonts.get_mut(&path).expect("just loaded");
+        let glyphs = font.layout(&text, DVec2::new(offset.x, offset.y));
+        self.count_objects(glyphs.len() as u64, std::mem::size_of::<Object>(), kw.span)?;
+        // Prism space (u, h, v) to text space: u is x, -v is y, the sweep h is z.
+        let stand_up = DMat3::from_cols(DVec3::X, DVec3::Z, -DVec3::Y);
+        let children = glyphs
+            .into_iter()
+            .map(|g| {
+                let mut o = Object::new(Shape::Glyph(Glyph {
+                    segments: g.segments,
+                    depth: thickness,
+                }));
+                let place = DAffine3::from_mat3_translation(stand_up, g.at.extend(0.0));
+                if let Some(t) = Transform::from_affine(place) {
+                    o.transform_by(&t);
+                }
+                o
+            })
+            .collect();
+        Ok(ObjectValue {
+            object: Some(Object::new(Shape::Union(children))),
+            lights: Vec::new(),
+        })
+    }
+
+    fn string_item(&mut self, what: &str) -> R<(std::rc::Rc<str>, Span)> {
+        let (v, span) = self.expr()?;
+        match v {
+            Value::Str(s) => Ok((s, span)),
+            other => Err(self.err(
+                span,
+                format!("expected {what}, found {}", other.kind_name()),
+            )),
+        }
+    }
+
+    /// The font's path, loaded into the cache the first time. Found like an include file,
+    /// then with `.ttf` added, as POV-Ray does (`ttf "cyrvetic"`).
+    fn font(&mut self, name: &str, span: Span) -> R<std::path::PathBuf> {
+        let path = self
+            .resolve_include(name)
+            .or_else(|| self.resolve_include(&format!("{name}.ttf")));
+        let Some(path) = path else {
+            return Err(self.err(span, format!("cannot find the font \"{name}\"")));
+        };
+        if !self.fonts.contains_key(&path) {
+            let bytes = std::fs::read(&path)
+                .map_err(|e| self.err(span, format!("cannot read the font \"{name}\": {e}")))?;
+            let font = Font::new(bytes).map_err(|e| self.err(span, format!("\"{name}\" {e}")))?;
+            self.fonts.insert(path.clone(), font);
+        }
+        Ok(path)
+    }
+}
