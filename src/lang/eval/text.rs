@@ -30,9 +30,9 @@ impl Evaluator<'_> {
         self.eat(Punct::Comma)?;
         let (v, s) = self.expr()?;
         let offset = self.to_vec3(&v, s)?;
-        let path = self.font(&font_name, font_span)?;
-        let font = self.fonts.get_mut(&path).expect("just loaded");
+        let (path, mut font) = self.font(&font_name, font_span)?;
         let glyphs = font.layout(&text, DVec2::new(offset.x, offset.y));
+        self.fonts.insert(path, font);
         self.count_objects(glyphs.len() as u64, std::mem::size_of::<Object>(), kw.span)?;
         // Prism space (u, h, v) to text space: u is x, -v is y, the sweep h is z.
         let stand_up = DMat3::from_cols(DVec3::X, DVec3::Z, -DVec3::Y);
@@ -67,21 +67,22 @@ impl Evaluator<'_> {
         }
     }
 
-    /// The font's path, loaded into the cache the first time. Found like an include file,
-    /// then with `.ttf` added, as POV-Ray does (`ttf "cyrvetic"`).
-    fn font(&mut self, name: &str, span: Span) -> R<std::path::PathBuf> {
+    /// The font and its path, taken from the cache (the caller puts it back) or read.
+    /// Found like an include file, then with `.ttf` added, as POV-Ray does
+    /// (`ttf "cyrvetic"`).
+    fn font(&mut self, name: &str, span: Span) -> R<(std::path::PathBuf, Font)> {
         let path = self
             .resolve_include(name)
             .or_else(|| self.resolve_include(&format!("{name}.ttf")));
         let Some(path) = path else {
             return Err(self.err(span, format!("cannot find the font \"{name}\"")));
         };
-        if !self.fonts.contains_key(&path) {
-            let bytes = std::fs::read(&path)
-                .map_err(|e| self.err(span, format!("cannot read the font \"{name}\": {e}")))?;
-            let font = Font::new(bytes).map_err(|e| self.err(span, format!("\"{name}\" {e}")))?;
-            self.fonts.insert(path.clone(), font);
+        if let Some(font) = self.fonts.remove(&path) {
+            return Ok((path, font));
         }
-        Ok(path)
+        let bytes = std::fs::read(&path)
+            .map_err(|e| self.err(span, format!("cannot read the font \"{name}\": {e}")))?;
+        let font = Font::new(bytes).map_err(|e| self.err(span, format!("\"{name}\" {e}")))?;
+        Ok((path, font))
     }
 }
