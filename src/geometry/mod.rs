@@ -1,8 +1,11 @@
 //! Geometry: rays, shapes, transforms, bounding boxes, the BVH, and the render-ready world.
 
 mod aabb;
+mod bicubic;
 mod blob;
 mod bvh;
+mod height_field;
+mod mesh;
 mod prism;
 mod profile;
 mod ray;
@@ -15,7 +18,10 @@ mod world;
 
 pub use aabb::Aabb;
 pub use blob::{BlobData, BlobPart};
+pub use bicubic::{MAX_STEPS as BICUBIC_MAX_STEPS, tessellate as tessellate_bicubic};
 pub use bvh::Bvh;
+pub use height_field::HeightFieldData;
+pub use mesh::{MeshData, NONE as NO_INDEX};
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use revolve::{LatheData, SorData};
@@ -23,5 +29,6 @@ pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use superellipsoid::Superellipsoid;
 pub use transform::Transform;
 pub use world::{
-    CsgOp, Hit, Item, Primitive, SurfacePoint, TexturePoint, World, WorldBuilder, flags,
+    CsgOp, Hit, Item, MaterialBlend, Primitive, SurfacePoint, TexturePoint, World, WorldBuilder,
+    flags,
 };

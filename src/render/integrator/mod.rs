@@ -24,7 +24,7 @@ pub use optics::{fresnel, refract};
 use glam::DVec3;
 
 use crate::appearance::finish::{metallic_tint, reflectivity};
-use crate::appearance::{perturbed_normal, sky_colour, texture_layers};
+use crate::appearance::{blended_layers, perturbed_normal, sky_colour, texture_layers};
 use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
 use crate::scene::{Colour, Finish};
 
@@ -280,7 +280,14 @@ impl<'a> Integrator<'a> {
 
     /// The surface's own colour, layer by layer, then what it reflects and transmits.
     fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
-        let layers = texture_layers(&s.material.texture, &s.surface);
+        let layers = match s.surface.blend {
+            Some(b) => blended_layers(
+                b.materials.map(|m| &self.scene.materials[m as usize].texture),
+                b.weights,
+                &s.surface,
+            ),
+            None => texture_layers(&s.material.texture, &s.surface),
+        };
         let mut colour = DVec3::ZERO;
         // Layers composite top first: each lets through what its own opacity does not cover.
         let mut through = DVec3::ONE;
