@@ -27,7 +27,7 @@ bicubic_patch {
   <0, 2, 1>, <1, 2.5, 1>, <2, 1.5, 1.5>, <3, 2, 1>,
   <0, 2, 0>, <1, 3, 0>, <2, 2, 0>, <3, 2.5, 0>
   pigment { color rgb <0.3, 0.5, 0.9> } finish { F }
-  translate <-1.5, 0, 0> scale 0.7 rotate <0, -30, 0> translate <2.6, 0.2, 1.5>
+  translate <-1.5, 0, 0> scale 0.7 rotate <0, -60, 0> translate <2.6, 0.2, 1.5>
 }
 bicubic_patch {
   type 1 flatness 0 u_steps 3 v_steps 2

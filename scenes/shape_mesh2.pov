@@ -56,7 +56,7 @@ mesh2 {
     <3, 4, 7>, <3, 7, 6>, <4, 5, 8>, <4, 8, 7>
   }
   pigment { color rgb <0.9, 0.6, 0.3> } finish { F }
-  scale <1.1, 0.5, 1.1> rotate <0, 20, 0> translate <3.3, 1.4, 1.2>
+  scale <1.1, 0.5, 1.1> rotate <-25, 65, 0> translate <2.9, 1.6, 1.6>
 }
 // A quad with uvs under a checker, and a triangle whose corners have their own textures.
 mesh2 {

@@ -145,7 +145,9 @@ impl HeightFieldData {
             if yhi < lo as f64 || ylo > hi as f64 || yhi < self.water_level {
                 return true;
             }
-            walk(o, d, ta, tb, 1.0, self.cells(), |cx, cz, _, _| visit(cx, cz))
+            walk(o, d, ta, tb, 1.0, self.cells(), |cx, cz, _, _| {
+                visit(cx, cz)
+            })
         });
     }
 
@@ -210,7 +212,11 @@ impl HeightFieldData {
     fn decode(&self, part: u32) -> (usize, usize, u32) {
         let cell = (part / 2) as usize;
         let sx = self.nx - 1;
-        ((cell % sx).min(sx - 1), (cell / sx).min(self.nz - 2), part % 2)
+        (
+            (cell % sx).min(sx - 1),
+            (cell / sx).min(self.nz - 2),
+            part % 2,
+        )
     }
 
     /// From grid units back to the object's: x and z stretch by the cell counts.
@@ -286,7 +292,11 @@ impl HeightFieldData {
 /// The tiles a grid point along one axis belongs to.
 fn tile_span(i: usize, tiles: usize) -> std::ops::RangeInclusive<usize> {
     let hi = (i / TILE).min(tiles - 1);
-    let lo = if i % TILE == 0 && i > 0 { i / TILE - 1 } else { hi };
+    let lo = if i % TILE == 0 && i > 0 {
+        i / TILE - 1
+    } else {
+        hi
+    };
     lo.min(hi)..=hi
 }
 
@@ -410,7 +420,9 @@ mod tests {
         let hf = field(37);
         let mut state = 12345u64;
         let mut next = move || {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (state >> 11) as f64 / (1u64 << 53) as f64
         };
         for _ in 0..2000 {

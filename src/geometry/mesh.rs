@@ -85,15 +85,14 @@ impl MeshData {
     #[inline]
     pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<(f64, u32)> {
         let mut best = None;
-        self.bvh.traverse(ray, t_max, |face, t_cur| {
-            match self.face_hit(ray, face) {
+        self.bvh
+            .traverse(ray, t_max, |face, t_cur| match self.face_hit(ray, face) {
                 Some(t) if t > 0.0 && t < t_cur => {
                     best = Some((t, face));
                     Some(t)
                 }
                 _ => Some(t_cur),
-            }
-        });
+            });
         best
     }
 
@@ -193,7 +192,13 @@ impl MeshData {
     /// The face's corner materials, or `None` when it shows the mesh's own (`own`).
     pub fn corner_materials(&self, face: u32, own: u32) -> Option<[u32; 3]> {
         let slots = self.face_textures.get(face as usize)?;
-        Some(slots.map(|s| if s == NONE { own } else { self.materials[s as usize] }))
+        Some(slots.map(|s| {
+            if s == NONE {
+                own
+            } else {
+                self.materials[s as usize]
+            }
+        }))
     }
 
     /// POV-Ray's inside test for meshes: an odd number of crossings along the inside

@@ -17,8 +17,8 @@ mod transform;
 mod world;
 
 pub use aabb::Aabb;
-pub use blob::{BlobData, BlobPart};
 pub use bicubic::{MAX_STEPS as BICUBIC_MAX_STEPS, tessellate as tessellate_bicubic};
+pub use blob::{BlobData, BlobPart};
 pub use bvh::Bvh;
 pub use height_field::HeightFieldData;
 pub use mesh::{MeshData, NONE as NO_INDEX};

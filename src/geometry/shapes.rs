@@ -66,7 +66,11 @@ impl ShapeTables {
                     size_of::<BlobData>() + b.parts.capacity() * size_of::<super::blob::BlobPart>()
                 })
                 .sum::<usize>()
-            + self.meshes.iter().map(MeshData::memory_bytes).sum::<usize>()
+            + self
+                .meshes
+                .iter()
+                .map(MeshData::memory_bytes)
+                .sum::<usize>()
             + self
                 .height_fields
                 .iter()

@@ -358,9 +358,9 @@ impl World {
             if p.flags & skip != 0 {
                 return None;
             }
-            let (t, part) =
-                p.shape
-                    .intersect_part(&self.local_ray(p, ray), t_max, &self.tables)?;
+            let (t, part) = p
+                .shape
+                .intersect_part(&self.local_ray(p, ray), t_max, &self.tables)?;
             return Some(Hit {
                 t,
                 primitive: item,

@@ -317,7 +317,12 @@ impl Builder {
         data.materials = mesh
             .textures
             .iter()
-            .map(|t| self.material(Looks { texture: t, ..looks }))
+            .map(|t| {
+                self.material(Looks {
+                    texture: t,
+                    ..looks
+                })
+            })
             .collect();
         data.finish();
         let uv = looks.texture.uses_uv() || mesh.textures.iter().any(|t| t.uses_uv());
@@ -610,7 +615,12 @@ fn mesh_data(mesh: &Mesh) -> Option<MeshData> {
     let f32s = |v: &DVec3| v.as_vec3().to_array();
     let mut data = MeshData::default();
     data.vertices = mesh.vertices.iter().map(f32s).collect();
-    data.normals = mesh.normals.iter().map(f32s).collect();
+    // Unit length as POV-Ray keeps them: interpolation weighs each corner alike.
+    data.normals = mesh
+        .normals
+        .iter()
+        .map(|n| f32s(&n.normalize_or(DVec3::Y)))
+        .collect();
     data.uvs = mesh.uvs.iter().map(|v| v.as_vec2().to_array()).collect();
     data.faces = mesh.faces.iter().map(|f| f.vertices).collect();
     data.inside_vector = mesh.inside_vector;

@@ -79,7 +79,7 @@ pub enum Shape {
     },
     Blob(Blob),
     HeightField(HeightField),
-    BicubicPatch(BicubicPatch),
+    BicubicPatch(Box<BicubicPatch>),
     Union(Vec<Object>),
     /// A union without the interior surfaces.
     Merge(Vec<Object>),

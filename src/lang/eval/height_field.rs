@@ -53,7 +53,10 @@ impl Evaluator<'_> {
         }
         let (v, span) = self.expr()?;
         let Value::Str(name) = v else {
-            return Err(self.err(span, "expected the height field's image file name as a string"));
+            return Err(self.err(
+                span,
+                "expected the height field's image file name as a string",
+            ));
         };
         let ext = Path::new(&*name)
             .extension()
@@ -75,13 +78,19 @@ impl Evaluator<'_> {
             return Err(self.unsupported(&at, &what));
         }
         let Some(path) = self.resolve_include(&name) else {
-            return Err(self.err(span, format!("cannot find the height field image \"{name}\"")));
+            return Err(self.err(
+                span,
+                format!("cannot find the height field image \"{name}\""),
+            ));
         };
         let image = load_heights(&path, format).map_err(|e| self.err(span, e))?;
         if image.width < 2 || image.height < 2 {
             return Err(self.err(
                 span,
-                format!("a height field image needs at least 2 x 2 pixels, \"{name}\" has {} x {}", image.width, image.height),
+                format!(
+                    "a height field image needs at least 2 x 2 pixels, \"{name}\" has {} x {}",
+                    image.width, image.height
+                ),
             ));
         }
         self.count_objects(1, image.values.len() * 4, kw.span)?;
@@ -149,7 +158,9 @@ fn png_heights(bytes: &[u8]) -> Result<Heights, String> {
     // Palette indices and 16-bit samples as stored; only sub-byte depths are widened.
     decoder.set_transformations(png::Transformations::IDENTITY);
     let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
-    let size = reader.output_buffer_size().ok_or("the image is too large")?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or("the image is too large")?;
     let mut buf = vec![0u8; size];
     let info = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
     let (w, h) = (info.width as usize, info.height as usize);
@@ -225,7 +236,10 @@ fn netpbm_heights(bytes: &[u8]) -> Result<Heights, String> {
         "P3" | "P6" => 3,
         m => return Err(format!("not a PGM or PPM file (`{m}`)")),
     };
-    let n = w.checked_mul(h).and_then(|p| p.checked_mul(channels)).ok_or("the image is too large")?;
+    let n = w
+        .checked_mul(h)
+        .and_then(|p| p.checked_mul(channels))
+        .ok_or("the image is too large")?;
     let mut samples = Vec::with_capacity(n.min(1 << 26));
     if magic == "P2" || magic == "P3" {
         for _ in 0..n {

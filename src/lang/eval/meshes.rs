@@ -72,7 +72,11 @@ impl Evaluator<'_> {
 
     /// One `triangle { a, b, c [uv_vectors ...] [texture {...}] }` of a mesh (or smooth).
     fn mesh_triangle(&mut self, mesh: &mut Mesh, smooth: bool, tok: &Token) -> R<()> {
-        let word = if smooth { "smooth_triangle" } else { "triangle" };
+        let word = if smooth {
+            "smooth_triangle"
+        } else {
+            "triangle"
+        };
         let open = self.block_start(word)?;
         let mut corners = [DVec3::ZERO; 3];
         let mut normals = [DVec3::ZERO; 3];
@@ -166,7 +170,9 @@ impl Evaluator<'_> {
             match word {
                 "vertex_vectors" | "normal_vectors" | "uv_vectors" => {
                     if faces.is_some() {
-                        return Err(self.err(tok.span, format!("{word} must come before face_indices")));
+                        return Err(
+                            self.err(tok.span, format!("{word} must come before face_indices"))
+                        );
                     }
                     let list = self.vector_list(word)?;
                     match word {
@@ -179,7 +185,9 @@ impl Evaluator<'_> {
                 "face_indices" => faces = Some(self.face_indices(&mesh)?),
                 "normal_indices" | "uv_indices" => {
                     let Some(f) = &faces else {
-                        return Err(self.err(tok.span, format!("{word} must come after face_indices")));
+                        return Err(
+                            self.err(tok.span, format!("{word} must come after face_indices"))
+                        );
                     };
                     let (list, len) = if word == "normal_indices" {
                         ("normal_vectors", mesh.normals.len())
@@ -354,7 +362,10 @@ impl Evaluator<'_> {
         let Value::Vector(_) = v else {
             return Err(self.err(
                 s,
-                format!("expected a vector of three indices, found {}", v.kind_name()),
+                format!(
+                    "expected a vector of three indices, found {}",
+                    v.kind_name()
+                ),
             ));
         };
         let v = self.to_vec3(v, s)?;
@@ -519,7 +530,9 @@ impl Evaluator<'_> {
                     let s = self.peek()?.span;
                     let t = self.map_value()?;
                     if t != 0.0 && t != 1.0 {
-                        return Err(self.err(s, format!("a bicubic_patch's type is 0 or 1, found {t}")));
+                        return Err(
+                            self.err(s, format!("a bicubic_patch's type is 0 or 1, found {t}"))
+                        );
                     }
                     patch.kind = t as u32;
                     has_type = true;
@@ -542,7 +555,13 @@ impl Evaluator<'_> {
                     let s = self.peek()?.span;
                     let n = self.map_value()?;
                     if !(0.0..=crate::geometry::BICUBIC_MAX_STEPS as f64).contains(&n) {
-                        return Err(self.err(s, format!("{w} must be from 0 to {}, found {n}", crate::geometry::BICUBIC_MAX_STEPS)));
+                        return Err(self.err(
+                            s,
+                            format!(
+                                "{w} must be from 0 to {}, found {n}",
+                                crate::geometry::BICUBIC_MAX_STEPS
+                            ),
+                        ));
                     }
                     if w == "u_steps" {
                         patch.u_steps = n as u32;
@@ -562,10 +581,13 @@ impl Evaluator<'_> {
             }
             let t = self.peek()?;
             if t.is_punct(Punct::RBrace) {
-                return Err(self.err(t.span, format!("a bicubic_patch has 16 control points, found {i}")));
+                return Err(self.err(
+                    t.span,
+                    format!("a bicubic_patch has 16 control points, found {i}"),
+                ));
             }
             patch.points[i] = self.vector3()?;
         }
-        Ok(shape(Shape::BicubicPatch(patch)))
+        Ok(shape(Shape::BicubicPatch(Box::new(patch))))
     }
 }

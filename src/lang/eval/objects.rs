@@ -66,9 +66,11 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("blob", |ev, kw| kept(ev.blob_items(kw)?)),
     ("mesh2", |ev, kw| kept(ev.mesh2_items(kw)?)),
     ("bicubic_patch", |ev, kw| kept(ev.bicubic_items(kw)?)),
-    ("height_field", |ev, kw| match ev.height_field_items(kw)? {
-        Some(o) => kept(o),
-        None => Ok(ShapeRead::Skipped),
+    ("height_field", |ev, kw| {
+        match ev.height_field_items(kw)? {
+            Some(o) => kept(o),
+            None => Ok(ShapeRead::Skipped),
+        }
     }),
 ];
 
