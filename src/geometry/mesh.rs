@@ -49,6 +49,8 @@ impl MeshData {
         permute(&mut self.face_uvs);
         permute(&mut self.face_textures);
         bvh.items = (0..order.len() as u32).collect();
+        // The build reserves room for the worst case; a mesh keeps what it used.
+        bvh.nodes.shrink_to_fit();
         self.bvh = bvh;
     }
 
