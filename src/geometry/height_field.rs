@@ -292,7 +292,7 @@ impl HeightFieldData {
 /// The tiles a grid point along one axis belongs to.
 fn tile_span(i: usize, tiles: usize) -> std::ops::RangeInclusive<usize> {
     let hi = (i / TILE).min(tiles - 1);
-    let lo = if i % TILE == 0 && i > 0 {
+    let lo = if i.is_multiple_of(TILE) && i > 0 {
         i / TILE - 1
     } else {
         hi

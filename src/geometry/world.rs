@@ -702,6 +702,7 @@ impl World {
 
 #[cfg(test)]
 mod tests {
+    use super::super::TriangleData;
     use super::*;
 
     fn sphere_at(b: &mut WorldBuilder, x: f64, r: f64) -> Item {
@@ -798,6 +799,36 @@ mod tests {
         assert!(first_hit(&w, DVec3::new(0.5, 0.0, 0.0), DVec3::X).is_some());
         assert_eq!(first_hit(&w, DVec3::new(1.5, 0.0, 0.0), DVec3::X), None);
         assert!(w.inside(item.0, DVec3::new(1.5, 5.0, 0.0)));
+    }
+
+    #[test]
+    fn subtracting_a_surface_without_an_inside_keeps_only_its_part_inside() {
+        // A box minus a triangle across it: as in POV-Ray, the box's own faces go and the
+        // triangle shows where it is inside the box.
+        let mut b = WorldBuilder::default();
+        let cube = b.primitive(
+            ShapeKind::Box {
+                min: DVec3::splat(-1.0),
+                max: DVec3::splat(1.0),
+            },
+            &Transform::IDENTITY,
+            0,
+            0,
+        );
+        b.tables.triangles.push(TriangleData {
+            p0: DVec3::new(-3.0, 0.0, -3.0),
+            e1: DVec3::new(6.0, 0.0, 0.0),
+            e2: DVec3::new(0.0, 0.0, 6.0),
+            normals: None,
+        });
+        let tri = b.primitive(ShapeKind::Triangle(0), &Transform::IDENTITY, 0, 0);
+        let d = b.csg(CsgOp::Difference, vec![cube, tri], false);
+        b.add_top(d);
+        let w = b.build();
+        let t = first_hit(&w, DVec3::new(-0.5, 5.0, -0.5), -DVec3::Y).unwrap();
+        assert!((t - 5.0).abs() < 1e-12, "{t}");
+        assert_eq!(first_hit(&w, DVec3::new(-5.0, 0.5, 0.0), DVec3::X), None);
+        assert!(!w.inside(d.0, DVec3::new(0.0, 0.5, 0.0)));
     }
 
     #[test]

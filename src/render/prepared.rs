@@ -516,29 +516,7 @@ impl Builder {
                     None,
                 )
             }
-            Shape::HeightField(ref hf) => {
-                let data = HeightFieldData::new(
-                    hf.columns,
-                    hf.rows,
-                    hf.heights.clone(),
-                    hf.smooth,
-                    hf.water_level,
-                )?;
-                self.world.tables.height_fields.push(data);
-                let i = self.world.tables.height_fields.len() - 1;
-                (ShapeKind::HeightField(i as u32), None)
-            }
-            Shape::BicubicPatch(ref patch) => {
-                let mut data =
-                    tessellate_bicubic(&patch.points, patch.v_steps, patch.u_steps, patch.uv);
-                if data.faces.is_empty() {
-                    return None;
-                }
-                data.finish();
-                self.world.tables.meshes.push(data);
-                let i = self.world.tables.meshes.len() - 1;
-                (ShapeKind::Mesh(i as u32), None)
-            }
+            Shape::HeightField(_) | Shape::BicubicPatch(_) => (self.grid_shape(shape)?, None),
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
             | Shape::Mesh(_)
@@ -546,6 +524,36 @@ impl Builder {
             | Shape::Merge(_)
             | Shape::Intersection(_)
             | Shape::Difference(_) => return None,
+        })
+    }
+
+    /// The table entry of a height field or a bicubic patch (`None` for other shapes, or
+    /// for data that makes no surface).
+    fn grid_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
+        let tables = &mut self.world.tables;
+        Some(match shape {
+            Shape::HeightField(hf) => {
+                let data = HeightFieldData::new(
+                    hf.columns,
+                    hf.rows,
+                    hf.heights.clone(),
+                    hf.smooth,
+                    hf.water_level,
+                )?;
+                tables.height_fields.push(data);
+                ShapeKind::HeightField((tables.height_fields.len() - 1) as u32)
+            }
+            Shape::BicubicPatch(patch) => {
+                let mut data =
+                    tessellate_bicubic(&patch.points, patch.v_steps, patch.u_steps, patch.uv);
+                if data.faces.is_empty() {
+                    return None;
+                }
+                data.finish();
+                tables.meshes.push(data);
+                ShapeKind::Mesh((tables.meshes.len() - 1) as u32)
+            }
+            _ => return None,
         })
     }
 

@@ -148,7 +148,11 @@ fn mesh_world(n: usize) -> (World, usize) {
         let theta = std::f64::consts::PI * j as f64 / n as f64;
         for i in 0..columns {
             let phi = std::f64::consts::TAU * i as f64 / columns as f64;
-            let p = DVec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin());
+            let p = DVec3::new(
+                theta.sin() * phi.cos(),
+                theta.cos(),
+                theta.sin() * phi.sin(),
+            );
             m.vertices.push(p.as_vec3().to_array());
         }
     }
@@ -197,7 +201,10 @@ fn height_field_world(n: usize) -> (World, usize) {
 /// The mesh2 and height field lines: rays per second on one large shape of each, and
 /// bytes of geometry per triangle.
 fn triangle_lines(options: &BenchOptions, line: &mut impl FnMut(String)) {
-    let shapes = [("mesh2", mesh_world(700)), ("hfield", height_field_world(512))];
+    let shapes = [
+        ("mesh2", mesh_world(700)),
+        ("hfield", height_field_world(512)),
+    ];
     for (name, (world, triangles)) in shapes {
         let figures = trace(&world, options.rays);
         line(format!(

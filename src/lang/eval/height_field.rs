@@ -27,7 +27,7 @@ struct Heights {
 }
 
 const IMAGE_TYPES: &[&str] = &[
-    "png", "pgm", "ppm", "tga", "gif", "iff", "jpeg", "tiff", "sys", "exr", "hdr", "bmp",
+    "png", "pgm", "ppm", "tga", "gif", "iff", "jpeg", "tiff", "sys", "exr", "hdr", "bmp", "pot",
 ];
 
 impl Evaluator<'_> {
@@ -49,7 +49,7 @@ impl Evaluator<'_> {
         let mut kind = None;
         if let Some(w) = tok.ident().filter(|w| IMAGE_TYPES.contains(w)) {
             self.next()?;
-            kind = Some((w, tok.clone()));
+            kind = Some((w, tok));
         }
         let (v, span) = self.expr()?;
         let Value::Str(name) = v else {
@@ -62,6 +62,7 @@ impl Evaluator<'_> {
             .extension()
             .and_then(|e| e.to_str())
             .map(str::to_ascii_lowercase);
+        let at = kind.as_ref().map(|k| k.1);
         let format = match (kind, ext.as_deref()) {
             (Some((w, _)), _) => w,
             (None, Some("png")) => "png",
@@ -71,10 +72,10 @@ impl Evaluator<'_> {
         };
         if !matches!(format, "png" | "pgm" | "ppm") {
             let what = format!("{format} images in a height_field");
-            let at = Token {
+            let at = at.unwrap_or(Token {
                 kind: TokenKind::Str(""),
                 span,
-            };
+            });
             return Err(self.unsupported(&at, &what));
         }
         let Some(path) = self.resolve_include(&name) else {

@@ -235,15 +235,17 @@ impl Evaluator<'_> {
                 format!("without {what}_indices the {len} {what}_vectors pair with the {n} vertex_vectors, so their counts must agree")
             })
         };
-        if normals.is_none() && !mesh.normals.is_empty() {
-            if let Some(m) = implied("normal", mesh.normals.len()) {
-                return Err(self.err(span, m));
-            }
+        if normals.is_none()
+            && !mesh.normals.is_empty()
+            && let Some(m) = implied("normal", mesh.normals.len())
+        {
+            return Err(self.err(span, m));
         }
-        if uvs.is_none() && !mesh.uvs.is_empty() {
-            if let Some(m) = implied("uv", mesh.uvs.len()) {
-                return Err(self.err(span, m));
-            }
+        if uvs.is_none()
+            && !mesh.uvs.is_empty()
+            && let Some(m) = implied("uv", mesh.uvs.len())
+        {
+            return Err(self.err(span, m));
         }
         let has_normals = !mesh.normals.is_empty();
         let has_uvs = !mesh.uvs.is_empty();
@@ -288,10 +290,11 @@ impl Evaluator<'_> {
         Ok(out)
     }
 
-    /// The count that opens a list.
+    /// The count that opens a list; it stops before a `<`, which starts the first vector
+    /// when the comma after the count is left out (`vertex_vectors { 14 <-1, -1, -1>`).
     fn list_count(&mut self, word: &str) -> R<usize> {
-        let (v, s) = self.expr()?;
-        let n = self.to_float(&v, s)?;
+        let s = self.peek()?.span;
+        let n = self.map_value()?;
         if !(0.0..=1e8).contains(&n) || n.fract() != 0.0 {
             return Err(self.err(s, format!("{word} needs a whole count, found {n}")));
         }
@@ -576,9 +579,8 @@ impl Evaluator<'_> {
             return Err(self.err(kw.span, "a bicubic_patch needs its `type` (0 or 1)"));
         }
         for i in 0..16 {
-            if i > 0 {
-                self.eat(Punct::Comma)?;
-            }
+            // A comma may follow the last option too (`v_steps 4, <0, 0, 0>, ...`).
+            self.eat(Punct::Comma)?;
             let t = self.peek()?;
             if t.is_punct(Punct::RBrace) {
                 return Err(self.err(
