@@ -13,4 +13,4 @@ pub mod texture;
 
 pub use pigment::evaluate_pigment;
 pub use sky::sky_colour;
-pub use texture::{Layer, Layers, may_transmit, perturbed_normal, texture_layers};
+pub use texture::{Layer, Layers, blended_layers, may_transmit, perturbed_normal, texture_layers};

@@ -72,6 +72,37 @@ pub fn texture_layers<'a>(texture: &'a Texture, at: impl Into<TexturePoint>) -> 
     layers
 }
 
+/// A mesh face with a texture per corner: each corner texture's top layer at the point,
+/// their colours mixed by the point's barycentric `weights` as POV-Ray mixes them, with
+/// the finish of the heaviest corner (exact when the corners share a finish, as for
+/// texture maps here).
+pub fn blended_layers<'a>(
+    textures: [&'a Texture; 3],
+    weights: [f64; 3],
+    at: impl Into<TexturePoint>,
+) -> Layers<'a> {
+    let p = at.into();
+    let mut colour = Colour::default();
+    let mut finish: Option<(&Finish, f64)> = None;
+    for (t, w) in textures.into_iter().zip(weights) {
+        let layers = texture_layers(t, p);
+        let Some(top) = layers.iter().next() else {
+            continue;
+        };
+        colour.rgb += top.colour.rgb * w;
+        colour.filter += top.colour.filter * w;
+        colour.transmit += top.colour.transmit * w;
+        if finish.is_none_or(|(_, best)| w > best) {
+            finish = Some((top.finish, w));
+        }
+    }
+    let mut out = Layers::default();
+    if let Some((finish, _)) = finish {
+        out.push(Layer { colour, finish });
+    }
+    out
+}
+
 /// Texture maps nest; beyond this depth a texture shows its own pigment.
 const MAX_NESTING: u32 = 8;
 

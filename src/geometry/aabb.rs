@@ -9,6 +9,12 @@ pub struct Aabb {
     pub max: DVec3,
 }
 
+impl Default for Aabb {
+    fn default() -> Aabb {
+        Aabb::EMPTY
+    }
+}
+
 impl Aabb {
     pub const EMPTY: Aabb = Aabb {
         min: DVec3::splat(f64::INFINITY),

@@ -1,9 +1,12 @@
 //! Geometry: rays, shapes, transforms, bounding boxes, the BVH, and the render-ready world.
 
 mod aabb;
+mod bicubic;
 mod blob;
 mod bvh;
 mod isosurface;
+mod height_field;
+mod mesh;
 mod prism;
 mod profile;
 mod ray;
@@ -15,9 +18,12 @@ mod transform;
 mod world;
 
 pub use aabb::Aabb;
+pub use bicubic::{MAX_STEPS as BICUBIC_MAX_STEPS, tessellate as tessellate_bicubic};
 pub use blob::{BlobData, BlobPart};
 pub use bvh::Bvh;
 pub use isosurface::{Container, IsoData};
+pub use height_field::HeightFieldData;
+pub use mesh::{MeshData, NONE as NO_INDEX};
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use revolve::{LatheData, SorData};
@@ -25,5 +31,6 @@ pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use superellipsoid::Superellipsoid;
 pub use transform::Transform;
 pub use world::{
-    CsgOp, Hit, Item, Primitive, SurfacePoint, TexturePoint, World, WorldBuilder, flags,
+    CsgOp, Hit, Item, MaterialBlend, Primitive, SurfacePoint, TexturePoint, World, WorldBuilder,
+    flags,
 };

@@ -8,6 +8,8 @@ use glam::{DVec2, DVec3};
 
 use super::blob::BlobData;
 use super::isosurface::IsoData;
+use super::height_field::HeightFieldData;
+use super::mesh::MeshData;
 use super::prism::PrismData;
 use super::revolve::{LatheData, SorData};
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
@@ -28,6 +30,8 @@ pub struct ShapeTables {
     pub lathes: Vec<LatheData>,
     pub blobs: Vec<BlobData>,
     pub isosurfaces: Vec<IsoData>,
+    pub meshes: Vec<MeshData>,
+    pub height_fields: Vec<HeightFieldData>,
 }
 
 impl ShapeTables {
@@ -80,6 +84,16 @@ impl ShapeTables {
                 })
                 .sum::<usize>()
             + self.isosurfaces.capacity() * size_of::<IsoData>()
+            + self
+                .meshes
+                .iter()
+                .map(MeshData::memory_bytes)
+                .sum::<usize>()
+            + self
+                .height_fields
+                .iter()
+                .map(HeightFieldData::memory_bytes)
+                .sum::<usize>()
     }
 }
 
@@ -151,6 +165,10 @@ pub enum ShapeKind {
     Blob(u32),
     /// Read the same way as superellipsoids.
     Isosurface(u32),
+    /// Triangles with their own BVH; a hit names its face (`intersect_part`).
+    Mesh(u32),
+    /// A grid of heights; a hit names its cell and triangle.
+    HeightField(u32),
 }
 
 impl ShapeKind {
@@ -192,6 +210,8 @@ impl ShapeKind {
             ShapeKind::Superellipsoid(s) => Some(s.bounds()),
             ShapeKind::Blob(i) => Some(tables.blobs[i as usize].bounds),
             ShapeKind::Isosurface(i) => Some(tables.isosurfaces[i as usize].bounds()),
+            ShapeKind::Mesh(i) => Some(tables.meshes[i as usize].bounds()),
+            ShapeKind::HeightField(i) => Some(tables.height_fields[i as usize].bounds()),
         }
     }
 
@@ -199,6 +219,9 @@ impl ShapeKind {
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f64, tables: &ShapeTables) -> Option<f64> {
+        if let ShapeKind::Mesh(_) | ShapeKind::HeightField(_) = *self {
+            return self.intersect_part(ray, t_max, tables).map(|h| h.0);
+        }
         if let ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) = *self {
             let mut best = t_max;
             self.each_hit(ray, tables, |t| {
@@ -238,6 +261,57 @@ impl ShapeKind {
             .find(|&t| t > 0.0 && t < t_max)
     }
 
+    /// Like [`ShapeKind::intersect`], with the part of the shape hit (a mesh's face, a
+    /// height field's triangle; 0 for shapes of one piece), which the normal, the uv and
+    /// the material of meshes depend on.
+    #[inline]
+    pub fn intersect_part(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        tables: &ShapeTables,
+    ) -> Option<(f64, u32)> {
+        match *self {
+            ShapeKind::Mesh(i) => tables.meshes[i as usize].hit(ray, t_max),
+            ShapeKind::HeightField(i) => tables.height_fields[i as usize].hit(ray, t_max),
+            _ => self.intersect(ray, t_max, tables).map(|t| (t, 0)),
+        }
+    }
+
+    /// Like [`ShapeKind::each_hit`], with the part of each crossing; meshes and height
+    /// fields give only the crossings ahead of the ray's origin.
+    #[inline]
+    pub fn each_hit_part(&self, ray: &Ray, tables: &ShapeTables, mut f: impl FnMut(f64, u32)) {
+        match *self {
+            ShapeKind::Mesh(i) => tables.meshes[i as usize].each_hit(ray, f),
+            ShapeKind::HeightField(i) => tables.height_fields[i as usize].each_hit(ray, f),
+            _ => self.each_hit(ray, tables, |t| f(t, 0)),
+        }
+    }
+
+    /// The geometric and shading normals at a point on `part` (see `intersect_part`).
+    pub fn normals(&self, p: DVec3, part: u32, tables: &ShapeTables) -> (DVec3, DVec3) {
+        match *self {
+            ShapeKind::Mesh(i) => {
+                let m = &tables.meshes[i as usize];
+                (m.normal(part), m.shading_normal(part, p))
+            }
+            ShapeKind::HeightField(i) => {
+                let h = &tables.height_fields[i as usize];
+                (h.normal(part), h.shading_normal(part, p))
+            }
+            _ => (self.normal(p, tables), self.shading_normal(p, tables)),
+        }
+    }
+
+    /// The surface's (u, v) at a point on `part` (see [`ShapeKind::uv`]).
+    pub fn uv_on(&self, p: DVec3, part: u32, tables: &ShapeTables) -> Option<DVec2> {
+        match *self {
+            ShapeKind::Mesh(i) => tables.meshes[i as usize].uv(part, p),
+            _ => self.uv(p),
+        }
+    }
+
     /// Calls `f` with every crossing of the surface along the whole line, in no particular
     /// order; CSG needs them all.
     #[inline]
@@ -251,6 +325,10 @@ impl ShapeKind {
                     f(t);
                     true
                 });
+            }
+            ShapeKind::Mesh(i) => tables.meshes[i as usize].each_hit(ray, |t, _| f(t)),
+            ShapeKind::HeightField(i) => {
+                tables.height_fields[i as usize].each_hit(ray, |t, _| f(t));
             }
             _ => {
                 for &t in self.all_hits(ray, tables).as_slice() {
@@ -342,6 +420,12 @@ impl ShapeKind {
                 self.each_hit(ray, tables, |t| r.push(t));
                 r
             }
+            ShapeKind::Mesh(_) | ShapeKind::HeightField(_) => {
+                let mut r = Roots::default();
+                self.each_hit(ray, tables, |t| r.push(t));
+                r.sort();
+                r
+            }
         }
     }
 
@@ -409,6 +493,9 @@ impl ShapeKind {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
             }
+            // Without the part (see `normals`): the first face's.
+            ShapeKind::Mesh(i) => tables.meshes[i as usize].normal(0),
+            ShapeKind::HeightField(i) => tables.height_fields[i as usize].normal(0),
         }
     }
 
@@ -515,6 +602,8 @@ impl ShapeKind {
             ShapeKind::Superellipsoid(s) => s.inside(p),
             ShapeKind::Blob(i) => tables.blobs[i as usize].inside(p),
             ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].inside(p),
+            ShapeKind::Mesh(i) => tables.meshes[i as usize].inside(p),
+            ShapeKind::HeightField(i) => tables.height_fields[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

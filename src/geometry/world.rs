@@ -59,6 +59,8 @@ pub struct Item(u32);
 pub struct Hit {
     pub t: f64,
     pub primitive: u32,
+    /// Which piece of the primitive: a mesh's face, a height field's triangle (else 0).
+    pub part: u32,
     /// The surface's outward side is reversed (the subtracted part of a difference, or an
     /// inverse object).
     pub flipped: bool,
@@ -76,6 +78,16 @@ pub struct SurfacePoint {
     /// The surface's own (u, v) where the material asks for it (`flags::UV`), else the
     /// world x and y, which is what povray uses for shapes without a uv mapping.
     pub uv: DVec2,
+    /// A mesh face with a texture per corner: POV-Ray shows the corners' textures mixed by
+    /// the point's barycentric weights.
+    pub blend: Option<MaterialBlend>,
+}
+
+/// Three materials and their weights at a point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MaterialBlend {
+    pub materials: [u32; 3],
+    pub weights: [f64; 3],
 }
 
 /// Where a texture is looked up: the world point, and the surface's (u, v) for patterns
@@ -351,12 +363,13 @@ impl World {
             if p.flags & skip != 0 {
                 return None;
             }
-            let t = p
+            let (t, part) = p
                 .shape
-                .intersect(&self.local_ray(p, ray), t_max, &self.tables)?;
+                .intersect_part(&self.local_ray(p, ray), t_max, &self.tables)?;
             return Some(Hit {
                 t,
                 primitive: item,
+                part,
                 flipped: p.flags & flags::INVERSE != 0,
             });
         }
@@ -380,11 +393,12 @@ impl World {
             }
             let flipped = p.flags & flags::INVERSE != 0;
             p.shape
-                .each_hit(&self.local_ray(p, ray), &self.tables, |t| {
+                .each_hit_part(&self.local_ray(p, ray), &self.tables, |t, part| {
                     if t > 0.0 && t < t_max {
                         f(Hit {
                             t,
                             primitive: item,
+                            part,
                             flipped,
                         });
                     }
@@ -422,9 +436,13 @@ impl World {
                     CsgOp::Intersection | CsgOp::Clip => {
                         others.into_iter().all(|(_, inside)| inside)
                     }
-                    CsgOp::Difference => others
-                        .into_iter()
-                        .all(|(j, inside)| if j == 0 { inside } else { !inside }),
+                    CsgOp::Difference => others.into_iter().all(|(j, inside)| {
+                        if j == 0 {
+                            inside
+                        } else {
+                            !inside && self.has_inside(node.children[j])
+                        }
+                    }),
                 };
                 if keep {
                     let subtracted = node.op == CsgOp::Difference && i > 0;
@@ -437,9 +455,28 @@ impl World {
         }
     }
 
+    /// Whether the item is a solid at all. Surfaces without one (triangles, polygons,
+    /// bicubic patches, meshes without an inside vector) hold no point even turned inside
+    /// out, so subtracting one keeps nothing of the other children (measured: a box minus
+    /// a triangle shows only the triangle's part in the box, as box and triangle
+    /// intersected do).
+    fn has_inside(&self, item: u32) -> bool {
+        if item & CSG_BIT != 0 {
+            return true;
+        }
+        match self.primitives[item as usize].shape {
+            ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
+            ShapeKind::Mesh(i) => self.tables.meshes[i as usize].inside_vector.is_some(),
+            _ => true,
+        }
+    }
+
     /// Whether a world point is inside an item's solid.
     pub fn inside(&self, item: u32, p: DVec3) -> bool {
         if item & CSG_BIT == 0 {
+            if !self.has_inside(item) {
+                return false;
+            }
             let prim = &self.primitives[item as usize];
             let local = match prim.transform {
                 NO_TRANSFORM => p,
@@ -452,7 +489,13 @@ impl World {
         let inside = match node.op {
             CsgOp::Union | CsgOp::Merge => children.any(|x| x),
             CsgOp::Intersection | CsgOp::Clip => children.all(|x| x),
-            CsgOp::Difference => children.next().unwrap_or(false) && !children.any(|x| x),
+            CsgOp::Difference => {
+                children.next().unwrap_or(false)
+                    && node.children[1..]
+                        .iter()
+                        .zip(children)
+                        .all(|(&c, inside)| !inside && self.has_inside(c))
+            }
             CsgOp::Bound => children.next().unwrap_or(false),
         };
         inside ^ node.inverse
@@ -565,23 +608,47 @@ impl World {
         self.primitives[primitive as usize].material
     }
 
+    /// The material at a hit: the primitive's, or the face's on a mesh with textures per
+    /// face (the first corner's where the corners differ).
+    pub fn hit_material(&self, hit: &Hit) -> u32 {
+        let p = &self.primitives[hit.primitive as usize];
+        match p.shape {
+            ShapeKind::Mesh(i) => self.tables.meshes[i as usize]
+                .corner_materials(hit.part, p.material)
+                .map_or(p.material, |m| m[0]),
+            _ => p.material,
+        }
+    }
+
+    /// The corner materials and weights of a hit on a mesh face whose corners differ.
+    fn blend(&self, p: &Primitive, part: u32, local: DVec3) -> Option<MaterialBlend> {
+        let ShapeKind::Mesh(i) = p.shape else {
+            return None;
+        };
+        let mesh = &self.tables.meshes[i as usize];
+        let materials = mesh.corner_materials(part, p.material)?;
+        if materials[0] == materials[1] && materials[1] == materials[2] {
+            return None;
+        }
+        let w = mesh.barycentric(part, local);
+        Some(MaterialBlend {
+            materials,
+            weights: [w.x, w.y, w.z],
+        })
+    }
+
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfacePoint {
         let p = &self.primitives[hit.primitive as usize];
         let point = ray.at(hit.t);
+        let local = self.local_point(p, point);
+        let (normal, shading) = p.shape.normals(local, hit.part, &self.tables);
         let (normal, shading) = if p.transform == NO_TRANSFORM {
-            (
-                p.shape.normal(point, &self.tables),
-                p.shape.shading_normal(point, &self.tables),
-            )
+            (normal, shading)
         } else {
             let t = &self.transforms[p.transform as usize];
-            let local = t.inverse_point(point);
-            (
-                t.normal(p.shape.normal(local, &self.tables)),
-                t.normal(p.shape.shading_normal(local, &self.tables)),
-            )
+            (t.normal(normal), t.normal(shading))
         };
-        let uv = self.uv(p, point);
+        let uv = self.uv(p, hit.part, point);
         let sign = if hit.flipped { -1.0 } else { 1.0 };
         let normal = normal.normalize_or(DVec3::Y) * sign;
         let mut shading_normal = shading.normalize_or(normal) * sign;
@@ -592,8 +659,9 @@ impl World {
             point,
             normal,
             shading_normal,
-            material: p.material,
+            material: self.hit_material(hit),
             uv,
+            blend: self.blend(p, hit.part, local),
         }
     }
 
@@ -602,22 +670,29 @@ impl World {
         let point = ray.at(hit.t);
         TexturePoint {
             world: point,
-            uv: self.uv(&self.primitives[hit.primitive as usize], point),
+            uv: self.uv(&self.primitives[hit.primitive as usize], hit.part, point),
         }
     }
 
     /// The primitive's own (u, v) at a world point on it, from its untransformed surface.
     #[inline]
-    fn uv(&self, p: &Primitive, point: DVec3) -> DVec2 {
+    fn uv(&self, p: &Primitive, part: u32, point: DVec3) -> DVec2 {
         if p.flags & flags::UV == 0 {
             return point.truncate();
         }
-        let local = if p.transform == NO_TRANSFORM {
+        let local = self.local_point(p, point);
+        p.shape
+            .uv_on(local, part, &self.tables)
+            .unwrap_or(point.truncate())
+    }
+
+    #[inline]
+    fn local_point(&self, p: &Primitive, point: DVec3) -> DVec3 {
+        if p.transform == NO_TRANSFORM {
             point
         } else {
             self.transforms[p.transform as usize].inverse_point(point)
-        };
-        p.shape.uv(local).unwrap_or(point.truncate())
+        }
     }
 
     /// The deepest leaf's depth in the BVH (0 for a single leaf or an empty tree).
@@ -632,6 +707,7 @@ impl World {
 
 #[cfg(test)]
 mod tests {
+    use super::super::TriangleData;
     use super::*;
 
     fn sphere_at(b: &mut WorldBuilder, x: f64, r: f64) -> Item {
@@ -728,6 +804,36 @@ mod tests {
         assert!(first_hit(&w, DVec3::new(0.5, 0.0, 0.0), DVec3::X).is_some());
         assert_eq!(first_hit(&w, DVec3::new(1.5, 0.0, 0.0), DVec3::X), None);
         assert!(w.inside(item.0, DVec3::new(1.5, 5.0, 0.0)));
+    }
+
+    #[test]
+    fn subtracting_a_surface_without_an_inside_keeps_only_its_part_inside() {
+        // A box minus a triangle across it: as in POV-Ray, the box's own faces go and the
+        // triangle shows where it is inside the box.
+        let mut b = WorldBuilder::default();
+        let cube = b.primitive(
+            ShapeKind::Box {
+                min: DVec3::splat(-1.0),
+                max: DVec3::splat(1.0),
+            },
+            &Transform::IDENTITY,
+            0,
+            0,
+        );
+        b.tables.triangles.push(TriangleData {
+            p0: DVec3::new(-3.0, 0.0, -3.0),
+            e1: DVec3::new(6.0, 0.0, 0.0),
+            e2: DVec3::new(0.0, 0.0, 6.0),
+            normals: None,
+        });
+        let tri = b.primitive(ShapeKind::Triangle(0), &Transform::IDENTITY, 0, 0);
+        let d = b.csg(CsgOp::Difference, vec![cube, tri], false);
+        b.add_top(d);
+        let w = b.build();
+        let t = first_hit(&w, DVec3::new(-0.5, 5.0, -0.5), -DVec3::Y).unwrap();
+        assert!((t - 5.0).abs() < 1e-12, "{t}");
+        assert_eq!(first_hit(&w, DVec3::new(-5.0, 0.5, 0.0), DVec3::X), None);
+        assert!(!w.inside(d.0, DVec3::new(0.0, 0.5, 0.0)));
     }
 
     #[test]

@@ -304,6 +304,8 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Triangle { .. } => "triangle",
             crate::scene::Shape::SmoothTriangle { .. } => "smooth_triangle",
             crate::scene::Shape::Mesh(_) => "mesh",
+            crate::scene::Shape::HeightField(_) => "height_field",
+            crate::scene::Shape::BicubicPatch(_) => "bicubic_patch",
             crate::scene::Shape::Polygon { .. } => "polygon",
             crate::scene::Shape::Prism(_) => "prism",
             crate::scene::Shape::Sor(_) => "sor",

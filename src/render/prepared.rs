@@ -6,12 +6,13 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    Aabb, BlobData, BlobPart, CsgOp, Item, LatheData, PolygonData, PrismData, ShapeKind, SorData,
-    Superellipsoid, Transform, TriangleData, World, WorldBuilder, flags,
+    Aabb, BlobData, BlobPart, CsgOp, HeightFieldData, Item, LatheData, MeshData, NO_INDEX,
+    PolygonData, PrismData, ShapeKind, SorData, Superellipsoid, Transform, TriangleData, World,
+    WorldBuilder, flags, tessellate_bicubic,
 };
 use crate::scene::{
-    Blob, BlobComponentKind, Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene,
-    Shape, SkySphere, Texture,
+    Blob, BlobComponentKind, Camera, Colour, GlobalSettings, Interior, Mesh, MeshFace, Object,
+    ObjectFlags, Scene, Shape, SkySphere, Texture,
 };
 
 use super::dimensions::{DimensionLayout, OptionalDecisions};
@@ -251,29 +252,11 @@ impl Builder {
                 }
                 return None;
             }
-            Shape::Mesh(mesh) if group_at_top => {
-                for t in &mesh.triangles {
-                    if let Some(i) = self.triangle(t.corners, t.normals, object, looks) {
-                        self.world.add_top(i);
-                    }
-                }
-                return None;
-            }
             Shape::Union(children)
             | Shape::Merge(children)
             | Shape::Intersection(children)
             | Shape::Difference(children) => self.csg(&object.shape, children, looks)?,
-            Shape::Mesh(mesh) => {
-                let items: Vec<Item> = mesh
-                    .triangles
-                    .iter()
-                    .filter_map(|t| self.triangle(t.corners, t.normals, object, looks))
-                    .collect();
-                if items.is_empty() {
-                    return None;
-                }
-                self.world.csg(CsgOp::Union, items, f.inverse)
-            }
+            Shape::Mesh(mesh) => self.mesh(mesh, object, looks)?,
             Shape::Triangle { corners } => self.triangle(*corners, None, object, looks)?,
             Shape::SmoothTriangle { corners, normals } => {
                 self.triangle(*corners, Some(*normals), object, looks)?
@@ -337,6 +320,32 @@ impl Builder {
         Some(
             self.world
                 .primitive(kind, &transform, material, mask(looks.flags) | uv),
+        )
+    }
+
+    /// A mesh as one primitive over its own BVH, with a material per texture its faces
+    /// name.
+    fn mesh(&mut self, mesh: &Mesh, object: &Object, looks: Looks<'_>) -> Option<Item> {
+        let mut data = mesh_data(mesh)?;
+        data.materials = mesh
+            .textures
+            .iter()
+            .map(|t| {
+                self.material(Looks {
+                    texture: t,
+                    ..looks
+                })
+            })
+            .collect();
+        data.finish();
+        let uv = looks.texture.uses_uv() || mesh.textures.iter().any(|t| t.uses_uv());
+        self.world.tables.meshes.push(data);
+        let kind = ShapeKind::Mesh((self.world.tables.meshes.len() - 1) as u32);
+        let material = self.material(looks);
+        let flags = mask(looks.flags) | if uv { flags::UV } else { 0 };
+        Some(
+            self.world
+                .primitive(kind, &object.transform, material, flags),
         )
     }
 
@@ -510,6 +519,7 @@ impl Builder {
             Shape::Superellipsoid { .. } | Shape::Isosurface(_) | Shape::Blob(_) => {
                 return self.field_shape(shape);
             }
+            Shape::HeightField(_) | Shape::BicubicPatch(_) => (self.grid_shape(shape)?, None),
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
             | Shape::Mesh(_)
@@ -541,6 +551,36 @@ impl Builder {
                     ShapeKind::Blob((self.world.tables.blobs.len() - 1) as u32),
                     None,
                 )
+            }
+            _ => return None,
+        })
+    }
+
+    /// The table entry of a height field or a bicubic patch (`None` for other shapes, or
+    /// for data that makes no surface).
+    fn grid_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
+        let tables = &mut self.world.tables;
+        Some(match shape {
+            Shape::HeightField(hf) => {
+                let data = HeightFieldData::new(
+                    hf.columns,
+                    hf.rows,
+                    hf.heights.clone(),
+                    hf.smooth,
+                    hf.water_level,
+                )?;
+                tables.height_fields.push(data);
+                ShapeKind::HeightField((tables.height_fields.len() - 1) as u32)
+            }
+            Shape::BicubicPatch(patch) => {
+                let mut data =
+                    tessellate_bicubic(&patch.points, patch.v_steps, patch.u_steps, patch.uv);
+                if data.faces.is_empty() {
+                    return None;
+                }
+                data.finish();
+                tables.meshes.push(data);
+                ShapeKind::Mesh((tables.meshes.len() - 1) as u32)
             }
             _ => return None,
         })
@@ -606,6 +646,38 @@ fn mask(f: ObjectFlags) -> u8 {
         m |= flags::INVERSE;
     }
     m
+}
+
+/// The render form of a mesh: single-precision arrays, and per-face index lists only for
+/// what some face has. `None` without faces.
+fn mesh_data(mesh: &Mesh) -> Option<MeshData> {
+    if mesh.faces.is_empty() {
+        return None;
+    }
+    let f32s = |v: &DVec3| v.as_vec3().to_array();
+    let mut data = MeshData::default();
+    data.vertices = mesh.vertices.iter().map(f32s).collect();
+    // Unit length as POV-Ray keeps them: interpolation weighs each corner alike.
+    data.normals = mesh
+        .normals
+        .iter()
+        .map(|n| f32s(&n.normalize_or(DVec3::Y)))
+        .collect();
+    data.uvs = mesh.uvs.iter().map(|v| v.as_vec2().to_array()).collect();
+    data.faces = mesh.faces.iter().map(|f| f.vertices).collect();
+    data.inside_vector = mesh.inside_vector;
+    let list = |pick: fn(&MeshFace) -> Option<[u32; 3]>| {
+        if mesh.faces.iter().any(|f| pick(f).is_some()) {
+            let none = [NO_INDEX; 3];
+            mesh.faces.iter().map(|f| pick(f).unwrap_or(none)).collect()
+        } else {
+            Vec::new()
+        }
+    };
+    data.face_normals = list(|f| f.normals);
+    data.face_uvs = list(|f| f.uvs);
+    data.face_textures = list(|f| f.textures);
+    Some(data)
 }
 
 /// A polygon's loops in 2D coordinates of its plane, and the frame back to 3D.

@@ -17,8 +17,8 @@ pub use fog::{Fog, FogKind, FogTurbulence};
 pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{
-    Blob, BlobComponent, BlobComponentKind, Glyph, Isosurface, Lathe, Mesh, MeshTriangle, Object,
-    ObjectFlags, Prism, Shape, Sor,
+    BicubicPatch, Blob, BlobComponent, BlobComponentKind, Glyph, HeightField, Isosurface, Lathe,
+    Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
 };
 pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,

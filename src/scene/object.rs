@@ -81,6 +81,8 @@ pub enum Shape {
     },
     Blob(Blob),
     Isosurface(Box<Isosurface>),
+    HeightField(HeightField),
+    BicubicPatch(Box<BicubicPatch>),
     Union(Vec<Object>),
     /// A union without the interior surfaces.
     Merge(Vec<Object>),
@@ -131,9 +133,17 @@ pub struct Lathe {
     pub points: Vec<DVec2>,
 }
 
+/// `mesh` and `mesh2`: faces indexing shared vertex, normal and uv arrays, so a large
+/// mesh holds each vertex once.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Mesh {
-    pub triangles: Vec<MeshTriangle>,
+    pub vertices: Vec<DVec3>,
+    pub normals: Vec<DVec3>,
+    pub uvs: Vec<DVec2>,
+    pub faces: Vec<MeshFace>,
+    /// The textures faces name (`texture_list`, a mesh triangle's own); they move with
+    /// the mesh.
+    pub textures: Vec<Arc<Texture>>,
     /// A direction for the inside test (ray parity); without it a mesh has no inside.
     pub inside_vector: Option<DVec3>,
 }
@@ -151,6 +161,61 @@ pub struct Isosurface {
     pub open: bool,
     /// file:line:column of the keyword, for warnings after the render.
     pub origin: std::sync::Arc<str>,
+}
+
+/// One triangle of a mesh, by index into the mesh's arrays.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshFace {
+    pub vertices: [u32; 3],
+    /// Corner normals (a smooth face).
+    pub normals: Option<[u32; 3]>,
+    pub uvs: Option<[u32; 3]>,
+    /// A texture per corner, into `Mesh::textures` (all three alike for a face texture);
+    /// `None` shows the mesh's own texture.
+    pub textures: Option<[u32; 3]>,
+}
+
+/// `height_field`: heights over the unit square of x and z, y in [0, 1], two triangles per
+/// cell of the grid of points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HeightField {
+    /// Grid points along x and along z.
+    pub columns: usize,
+    pub rows: usize,
+    /// Row by row along x, the first row at z = 0: point (i, j) at x = i / (columns - 1),
+    /// z = j / (rows - 1).
+    pub heights: Arc<Vec<f32>>,
+    /// Normals interpolated across the triangles.
+    pub smooth: bool,
+    /// Parts below this height are not shown.
+    pub water_level: f64,
+}
+
+impl HeightField {
+    /// Heights from a function of (x, z) in the unit square sampled at the grid points; the
+    /// image forms and, later, `height_field { function ... }` both come through here.
+    pub fn sample(columns: usize, rows: usize, f: impl Fn(usize, usize) -> f64) -> Vec<f32> {
+        let mut heights = Vec::with_capacity(columns * rows);
+        for j in 0..rows {
+            for i in 0..columns {
+                heights.push(f(i, j) as f32);
+            }
+        }
+        heights
+    }
+}
+
+/// `bicubic_patch`: a Bezier patch of 16 control points (row by row, index 4 v + u).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BicubicPatch {
+    /// POV-Ray's `type`: 0 and 1 render alike in 3.7 (only memory use differs).
+    pub kind: u32,
+    pub flatness: f64,
+    pub u_steps: u32,
+    pub v_steps: u32,
+    pub points: [DVec3; 16],
+    /// The (u, v) of the corners (0,0), (1,0), (1,1), (0,1).
+    pub uv: [DVec2; 4],
 }
 
 /// POV-Ray's blob: the surface where the summed field of the components equals
@@ -176,12 +241,6 @@ pub struct BlobComponent {
 pub enum BlobComponentKind {
     Sphere { center: DVec3 },
     Cylinder { end1: DVec3, end2: DVec3 },
-}
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct MeshTriangle {
-    pub corners: [DVec3; 3],
-    pub normals: Option<[DVec3; 3]>,
 }
 
 impl Shape {
@@ -257,6 +316,11 @@ impl Object {
         }
         if let Some(interior) = &mut self.interior {
             interior.transform_by(t);
+        }
+        if let Shape::Mesh(mesh) = &mut self.shape {
+            for texture in &mut mesh.textures {
+                Arc::make_mut(texture).transform_by(t);
+            }
         }
         if let Some(children) = self.shape.children_mut() {
             for child in children {

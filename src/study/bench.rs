@@ -262,6 +262,86 @@ fn text_lines(rays: usize) -> Vec<String> {
     out
 }
 
+/// A closed sphere of radius 1 as an indexed mesh of about `2 n^2` triangles (n bands of
+/// latitude, 2n of longitude): the mesh2 line's shape, and the large mesh whose memory per
+/// triangle the bench reports.
+fn mesh_world(n: usize) -> (World, usize) {
+    use crate::geometry::MeshData;
+    let mut m = MeshData::default();
+    let columns = 2 * n;
+    for j in 0..=n {
+        let theta = std::f64::consts::PI * j as f64 / n as f64;
+        for i in 0..columns {
+            let phi = std::f64::consts::TAU * i as f64 / columns as f64;
+            let p = DVec3::new(
+                theta.sin() * phi.cos(),
+                theta.cos(),
+                theta.sin() * phi.sin(),
+            );
+            m.vertices.push(p.as_vec3().to_array());
+        }
+    }
+    let at = |i: usize, j: usize| (j * columns + i % columns) as u32;
+    for j in 0..n {
+        for i in 0..columns {
+            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            if j > 0 {
+                m.faces.push([a, b, c]);
+            }
+            if j + 1 < n {
+                m.faces.push([a, c, d]);
+            }
+        }
+    }
+    m.finish();
+    let triangles = m.faces.len();
+    let mut b = WorldBuilder::default();
+    b.tables.meshes.push(m);
+    let item = b.primitive(ShapeKind::Mesh(0), &Transform::IDENTITY, 0, 0);
+    b.add_top(item);
+    (b.build(), triangles)
+}
+
+/// A height field of `n x n` points of rolling hills over [-1, 1] in x and z, tilted
+/// towards the camera.
+fn height_field_world(n: usize) -> (World, usize) {
+    let heights: Vec<f32> = (0..n * n)
+        .map(|k| {
+            let (x, z) = ((k % n) as f64 / n as f64, (k / n) as f64 / n as f64);
+            (0.5 + 0.25 * (13.0 * x).sin() * (11.0 * z).cos() + 0.2 * (31.0 * x * z).sin()) as f32
+        })
+        .collect();
+    let hf = crate::geometry::HeightFieldData::new(n, n, std::sync::Arc::new(heights), true, 0.0)
+        .expect("a full grid");
+    let mut b = WorldBuilder::default();
+    b.tables.height_fields.push(hf);
+    let place = Transform::translate(DVec3::new(-0.5, -0.5, -0.5))
+        .then(&Transform::scale(DVec3::new(2.0, 1.0, 2.0)).expect("non-zero"))
+        .then(&Transform::rotate(DVec3::new(-50.0, 0.0, 0.0)));
+    let item = b.primitive(ShapeKind::HeightField(0), &place, 0, 0);
+    b.add_top(item);
+    (b.build(), 2 * (n - 1) * (n - 1))
+}
+
+/// The mesh2 and height field lines: rays per second on one large shape of each, and
+/// bytes of geometry per triangle.
+fn triangle_lines(options: &BenchOptions, line: &mut impl FnMut(String)) {
+    let shapes = [
+        ("mesh2", mesh_world(700)),
+        ("hfield", height_field_world(512)),
+    ];
+    for (name, (world, triangles)) in shapes {
+        let figures = trace(&world, options.rays);
+        line(format!(
+            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   ({triangles} triangles, {:.1} bytes per triangle)",
+            figures.camera_rate,
+            figures.shadow_rate,
+            100.0 * figures.hit_fraction,
+            world.memory_bytes() as f64 / triangles as f64,
+        ));
+    }
+}
+
 struct RayFigures {
     camera_rate: f64,
     shadow_rate: f64,
@@ -471,6 +551,7 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
     }
     shape_lines(options.rays, &mut line);
     text_lines(options.rays).into_iter().for_each(&mut line);
+    triangle_lines(options, &mut line);
     if options.povray_counts.is_empty() {
         return report;
     }

@@ -608,6 +608,11 @@ impl Evaluator<'_> {
                 "max_intersections" | "number_of_waves" => {
                     ev.float()?;
                 }
+                // The output file's format (grey 16-bit, for height fields); the image
+                // rendered is the same.
+                "hf_gray_16" => {
+                    ev.optional_bool()?;
+                }
                 "charset" => {
                     ev.next()?;
                 }

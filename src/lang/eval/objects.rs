@@ -66,6 +66,14 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("blob", |ev, kw| kept(ev.blob_items(kw)?)),
     ("isosurface", |ev, kw| kept(ev.isosurface_items(kw)?)),
     ("text", |ev, kw| kept(ev.text_items(kw)?)),
+    ("mesh2", |ev, kw| kept(ev.mesh2_items(kw)?)),
+    ("bicubic_patch", |ev, kw| kept(ev.bicubic_items(kw)?)),
+    ("height_field", |ev, kw| {
+        match ev.height_field_items(kw)? {
+            Some(o) => kept(o),
+            None => Ok(ShapeRead::Skipped),
+        }
+    }),
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
@@ -81,11 +89,8 @@ pub fn is_object_keyword(word: &str) -> bool {
 pub fn is_known_unsupported_shape(word: &str) -> bool {
     matches!(
         word,
-        "mesh2"
-            | "height_field"
-            | "parametric"
+        "parametric"
             | "julia_fractal"
-            | "bicubic_patch"
             | "cubic"
             | "poly"
             | "polynomial"
@@ -701,60 +706,6 @@ impl Evaluator<'_> {
             },
             degenerate,
         ))
-    }
-
-    /// `mesh { triangle {...} smooth_triangle {...} ... [inside_vector v] [hierarchy b] }`
-    /// up to the object modifiers. Degenerate triangles are dropped silently, as POV-Ray does.
-    fn mesh_items(&mut self, kw: &Token) -> R<ObjectValue> {
-        let mut mesh = crate::scene::Mesh::default();
-        loop {
-            let tok = self.peek()?;
-            match tok.ident() {
-                Some(w @ ("triangle" | "smooth_triangle")) => {
-                    let smooth = w == "smooth_triangle";
-                    let open = self.block_start(w)?;
-                    let (tri, degenerate) = self.triangle_items(smooth)?;
-                    loop {
-                        let t = self.peek()?;
-                        if t.is_punct(Punct::RBrace) {
-                            break;
-                        }
-                        if t.is_ident("texture") {
-                            self.unsupported_or_skip(&t, "per-triangle textures in a mesh")?;
-                            continue;
-                        }
-                        return Err(self.stray_in_block(&t, "the mesh triangle"));
-                    }
-                    self.block_end(open, "the mesh triangle")?;
-                    let size = std::mem::size_of::<crate::scene::MeshTriangle>();
-                    self.count_objects(1, size, tok.span)?;
-                    if !degenerate {
-                        mesh.triangles.push(crate::scene::MeshTriangle {
-                            corners: tri.corners,
-                            normals: tri.normals,
-                        });
-                    }
-                }
-                Some("inside_vector") => {
-                    self.next()?;
-                    let (v, s) = self.expr()?;
-                    let v = self.to_vec3(&v, s)?;
-                    if v.length() < 1e-12 {
-                        return Err(self.err(s, "the inside_vector has zero length"));
-                    }
-                    mesh.inside_vector = Some(v);
-                }
-                Some("hierarchy") => {
-                    self.next()?;
-                    self.optional_bool()?;
-                }
-                _ => break,
-            }
-        }
-        if mesh.triangles.is_empty() {
-            return Err(self.err(kw.span, "this mesh has no (non-degenerate) triangles"));
-        }
-        Ok(shape(Shape::Mesh(mesh)))
     }
 
     /// `polygon { n, p1, ..., pn }`: 2-D points lie in z = 0. A last sub-polygon that does

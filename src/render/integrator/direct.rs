@@ -264,7 +264,7 @@ impl Integrator<'_> {
         let mut hits = [(0.0, 0u32); MAX_CROSSINGS];
         let mut n = 0;
         self.scene.world.shadow_hits(&ray, distance, |hit| {
-            hits[n] = (hit.t, self.scene.world.primitive_material(hit.primitive));
+            hits[n] = (hit.t, self.scene.world.hit_material(hit));
             n += 1;
             n < MAX_CROSSINGS
         });
@@ -340,7 +340,7 @@ impl Integrator<'_> {
         let mut crossings = Crossings::default();
         let mut filter = DVec3::ONE;
         scene.world.shadow_hits(ray, t_max, |hit| {
-            let index = scene.world.primitive_material(hit.primitive);
+            let index = scene.world.hit_material(hit);
             let material = &scene.materials[index as usize];
             if !material.transmits {
                 filter = DVec3::ZERO;

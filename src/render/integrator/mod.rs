@@ -24,7 +24,7 @@ pub use optics::{fresnel, refract};
 use glam::DVec3;
 
 use crate::appearance::finish::{metallic_tint, reflectivity};
-use crate::appearance::{perturbed_normal, sky_colour, texture_layers};
+use crate::appearance::{blended_layers, perturbed_normal, sky_colour, texture_layers};
 use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
 use crate::scene::{Colour, Finish};
 
@@ -261,7 +261,10 @@ impl<'a> Integrator<'a> {
         } else {
             DVec3::ONE
         };
-        let facing = if back {
+        // Turned by its own side, not the geometric normal's: POV-Ray flips an interpolated
+        // normal that faces away from the ray, so where it grazes the view a smooth mesh
+        // shows a crease (measured on a saddle seen edge-on and a twisted bicubic patch).
+        let facing = if surface.shading_normal.dot(d) > 0.0 {
             -surface.shading_normal
         } else {
             surface.shading_normal
@@ -280,7 +283,15 @@ impl<'a> Integrator<'a> {
 
     /// The surface's own colour, layer by layer, then what it reflects and transmits.
     fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
-        let layers = texture_layers(&s.material.texture, &s.surface);
+        let layers = match s.surface.blend {
+            Some(b) => blended_layers(
+                b.materials
+                    .map(|m| &self.scene.materials[m as usize].texture),
+                b.weights,
+                &s.surface,
+            ),
+            None => texture_layers(&s.material.texture, &s.surface),
+        };
         let mut colour = DVec3::ZERO;
         // Layers composite top first: each lets through what its own opacity does not cover.
         let mut through = DVec3::ONE;

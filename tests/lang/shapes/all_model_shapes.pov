@@ -15,7 +15,7 @@ polygon { 5, <0,0>, <1,0>, <1,1>, <0,1>, <0,0> }
 // model: objects[5].shape.Triangle.corners[1] = <1, 0, 0>
 // model: objects[6].shape.SmoothTriangle.normals[2] = <0, 0, 1>
 // The degenerate triangle is dropped silently, as POV-Ray does in meshes.
-// model: objects[7].shape.Mesh.0.triangles.len = 1
+// model: objects[7].shape.Mesh.0.faces.len = 1
 // model: objects[7].shape.Mesh.0.inside_vector = Some(<0, 0, 1>)
 // model: objects[8].shape.Polygon.points.len = 5
 // model: objects[8].shape.Polygon.points[2] = <1, 1, 0>
