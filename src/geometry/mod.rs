@@ -2,7 +2,9 @@
 
 mod aabb;
 mod blob;
+mod julia;
 mod bvh;
+mod poly;
 mod prism;
 mod profile;
 mod ray;
@@ -16,6 +18,8 @@ mod world;
 pub use aabb::Aabb;
 pub use blob::{BlobData, BlobPart};
 pub use bvh::Bvh;
+pub use julia::JuliaData;
+pub use poly::{MAX_ORDER as POLY_MAX_ORDER, PolyData, term_count as poly_term_count};
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use revolve::{LatheData, SorData};

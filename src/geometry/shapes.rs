@@ -7,6 +7,8 @@ use std::f64::consts::{PI, TAU};
 use glam::{DVec2, DVec3};
 
 use super::blob::BlobData;
+use super::julia::JuliaData;
+use super::poly::PolyData;
 use super::prism::PrismData;
 use super::revolve::{LatheData, SorData};
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
@@ -26,6 +28,8 @@ pub struct ShapeTables {
     pub sors: Vec<SorData>,
     pub lathes: Vec<LatheData>,
     pub blobs: Vec<BlobData>,
+    pub polys: Vec<PolyData>,
+    pub julias: Vec<JuliaData>,
 }
 
 impl ShapeTables {
@@ -62,6 +66,8 @@ impl ShapeTables {
                     size_of::<BlobData>() + b.parts.capacity() * size_of::<super::blob::BlobPart>()
                 })
                 .sum::<usize>()
+            + self.polys.iter().map(PolyData::memory_bytes).sum::<usize>()
+            + self.julias.capacity() * size_of::<JuliaData>()
     }
 }
 
@@ -131,6 +137,10 @@ pub enum ShapeKind {
     Superellipsoid(Superellipsoid),
     /// Read the same way as superellipsoids.
     Blob(u32),
+    /// `poly`, `cubic`, `polynomial`: up to seven crossings, read as prisms are.
+    Poly(u32),
+    /// `julia_fractal`: read as prisms are.
+    Julia(u32),
 }
 
 impl ShapeKind {
@@ -141,7 +151,10 @@ impl ShapeKind {
                 center - DVec3::splat(radius),
                 center + DVec3::splat(radius),
             )),
-            ShapeKind::Plane { .. } | ShapeKind::Quadric(_) | ShapeKind::Quartic(_) => None,
+            ShapeKind::Plane { .. }
+            | ShapeKind::Quadric(_)
+            | ShapeKind::Quartic(_)
+            | ShapeKind::Poly(_) => None,
             ShapeKind::Box { min, max } => Some(Aabb::new(min, max)),
             ShapeKind::Cone { r0, r1, .. } => {
                 let r = r0.abs().max(r1.abs());
@@ -171,6 +184,7 @@ impl ShapeKind {
             ShapeKind::Lathe(i) => Some(tables.lathes[i as usize].bounds()),
             ShapeKind::Superellipsoid(s) => Some(s.bounds()),
             ShapeKind::Blob(i) => Some(tables.blobs[i as usize].bounds),
+            ShapeKind::Julia(i) => Some(tables.julias[i as usize].bounds()),
         }
     }
 
@@ -178,7 +192,11 @@ impl ShapeKind {
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f64, tables: &ShapeTables) -> Option<f64> {
-        if let ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) = *self {
+        if let ShapeKind::Prism(_)
+        | ShapeKind::Sor(_)
+        | ShapeKind::Lathe(_)
+        | ShapeKind::Poly(_) = *self
+        {
             let mut best = t_max;
             self.each_hit(ray, tables, |t| {
                 if t > 0.0 && t < best {
@@ -187,7 +205,7 @@ impl ShapeKind {
             });
             return (best < t_max).then_some(best);
         }
-        if let ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) = *self {
+        if let ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Julia(_) = *self {
             // Crossings come in increasing order: stop at the first ahead of the origin.
             let mut found = None;
             self.crossings(ray, tables, |t| {
@@ -214,7 +232,8 @@ impl ShapeKind {
             ShapeKind::Prism(i) => tables.prisms[i as usize].each_hit(ray, f),
             ShapeKind::Sor(i) => tables.sors[i as usize].each_hit(ray, f),
             ShapeKind::Lathe(i) => tables.lathes[i as usize].each_hit(ray, f),
-            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+            ShapeKind::Poly(i) => tables.polys[i as usize].each_hit(ray, f),
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Julia(_) => {
                 self.crossings(ray, tables, |t| {
                     f(t);
                     true
@@ -233,6 +252,7 @@ impl ShapeKind {
         match *self {
             ShapeKind::Superellipsoid(s) => s.each_hit(ray, f),
             ShapeKind::Blob(i) => tables.blobs[i as usize].each_hit(ray, f),
+            ShapeKind::Julia(i) => tables.julias[i as usize].each_hit(ray, f),
             _ => {}
         }
     }
@@ -298,13 +318,16 @@ impl ShapeKind {
                 }
                 r
             }
-            ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) => {
+            ShapeKind::Prism(_)
+            | ShapeKind::Sor(_)
+            | ShapeKind::Lathe(_)
+            | ShapeKind::Poly(_) => {
                 let mut r = Roots::default();
                 self.each_hit(ray, tables, |t| r.push(t));
                 r.sort();
                 r
             }
-            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) => {
+            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Julia(_) => {
                 let mut r = Roots::default();
                 self.each_hit(ray, tables, |t| r.push(t));
                 r
@@ -371,6 +394,8 @@ impl ShapeKind {
             ShapeKind::Lathe(i) => tables.lathes[i as usize].normal(p),
             ShapeKind::Superellipsoid(s) => s.gradient(p),
             ShapeKind::Blob(i) => tables.blobs[i as usize].normal(p),
+            ShapeKind::Poly(i) => tables.polys[i as usize].gradient(p),
+            ShapeKind::Julia(i) => tables.julias[i as usize].normal(p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -480,6 +505,8 @@ impl ShapeKind {
             ShapeKind::Lathe(i) => tables.lathes[i as usize].inside(p),
             ShapeKind::Superellipsoid(s) => s.inside(p),
             ShapeKind::Blob(i) => tables.blobs[i as usize].inside(p),
+            ShapeKind::Poly(i) => tables.polys[i as usize].inside(p),
+            ShapeKind::Julia(i) => tables.julias[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

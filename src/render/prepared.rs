@@ -6,7 +6,7 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    Aabb, BlobData, BlobPart, CsgOp, Item, LatheData, PolygonData, PrismData, ShapeKind, SorData,
+    Aabb, BlobData, BlobPart, CsgOp, Item, JuliaData, LatheData, PolyData, PolygonData, PrismData, ShapeKind, SorData,
     Superellipsoid, Transform, TriangleData, World, WorldBuilder, flags,
 };
 use crate::scene::{
@@ -483,6 +483,21 @@ impl Builder {
                     ShapeKind::Quartic((self.world.tables.quartics.len() - 1) as u32),
                     None,
                 )
+            }
+            Shape::Poly {
+                order,
+                ref coefficients,
+            } => {
+                let tables = &mut self.world.tables;
+                tables
+                    .polys
+                    .push(PolyData::new(order as usize, coefficients));
+                (ShapeKind::Poly((tables.polys.len() - 1) as u32), None)
+            }
+            Shape::Julia(ref julia) => {
+                let tables = &mut self.world.tables;
+                tables.julias.push(JuliaData::new(julia));
+                (ShapeKind::Julia((tables.julias.len() - 1) as u32), None)
             }
             Shape::Polygon { ref points } => {
                 let (data, frame) = polygon(points)?;

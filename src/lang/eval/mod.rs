@@ -21,6 +21,7 @@ mod items;
 mod keywords;
 mod media;
 mod objects;
+mod poly;
 mod stream;
 mod sweeps;
 mod texture;

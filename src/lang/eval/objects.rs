@@ -64,6 +64,10 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     }),
     ("superellipsoid", |ev, _| kept(ev.superellipsoid()?)),
     ("blob", |ev, kw| kept(ev.blob_items(kw)?)),
+    ("poly", |ev, _| kept(ev.poly_items()?)),
+    ("cubic", |ev, _| kept(ev.cubic_items()?)),
+    ("polynomial", |ev, _| kept(ev.polynomial_items()?)),
+    ("julia_fractal", |ev, _| kept(ev.julia_items()?)),
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
@@ -84,11 +88,7 @@ pub fn is_known_unsupported_shape(word: &str) -> bool {
             | "height_field"
             | "isosurface"
             | "parametric"
-            | "julia_fractal"
             | "bicubic_patch"
-            | "cubic"
-            | "poly"
-            | "polynomial"
             | "ovus"
             | "sphere_sweep"
             | "light_group"
@@ -414,7 +414,7 @@ impl Evaluator<'_> {
                 "bounded_by" => {
                     self.next()?;
                     bounds = self.object_list("bounded_by", "clipped_by", &clipped)?;
-                    if matches!(object.shape, Shape::Quartic { .. }) {
+                    if matches!(object.shape, Shape::Quartic { .. } | Shape::Poly { .. }) {
                         object.bounded_by.clone_from(&bounds);
                     }
                     true
