@@ -113,8 +113,9 @@ impl PolyData {
         let s0 = -ray.origin.dot(dir);
         let o = ray.origin + dir * s0;
         let coef = self.along(o, dir);
-        let reach = REACH * (1.0 + o.length()) + s0.abs();
-        for &s in roots_in_wide(&coef[MAX_ORDER - self.order..], -reach, reach).as_slice() {
+        let coef = &coef[MAX_ORDER - self.order..];
+        let reach = root_bound(coef).min(REACH * (1.0 + o.length()) + s0.abs());
+        for &s in roots_in_wide(coef, -reach, reach).as_slice() {
             let t = s0 + s;
             if t.abs() > DEPTH_TOLERANCE && t.is_finite() {
                 f(t / d_len);
@@ -156,6 +157,29 @@ impl PolyData {
         sum.reverse();
         sum
     }
+}
+
+/// Fujiwara's bound on the size of every root (highest coefficient first): the walk's
+/// bisections then start from an interval the roots need, not from the far reach.
+fn root_bound(coef: &[f64]) -> f64 {
+    let Some(lead) = coef.iter().position(|&c| c != 0.0) else {
+        return 0.0;
+    };
+    let (a, rest) = (coef[lead], &coef[lead + 1..]);
+    let n = rest.len();
+    let bound = rest
+        .iter()
+        .enumerate()
+        .map(|(k, &c)| {
+            let ratio = (c / a).abs();
+            if k + 1 == n {
+                (ratio * 0.5).powf(1.0 / n as f64)
+            } else {
+                ratio.powf(1.0 / (k + 1) as f64)
+            }
+        })
+        .fold(0.0, f64::max);
+    2.0 * bound * (1.0 + 1e-9) + 1e-300
 }
 
 /// p's coordinates raised to 0..=order, per axis in x, y, z.
@@ -219,6 +243,15 @@ mod tests {
         assert!(p.inside(DVec3::ZERO) && !p.inside(DVec3::splat(1.01)));
         let g = p.gradient(DVec3::new(1.0, 0.0, 0.0));
         assert!((g - DVec3::new(6.0, 0.0, 0.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn every_root_lies_within_the_bound() {
+        // (s - 3)(s + 0.5)(s - 10) = s^3 - 12.5 s^2 + 25 s + 15, and a tiny leading term.
+        let b = root_bound(&[1.0, -12.5, 25.0, 15.0]);
+        assert!((10.0..=40.0).contains(&b), "{b}");
+        assert!(root_bound(&[1e-12, 1.0, -1.0]) > 1e11);
+        assert_eq!(root_bound(&[0.0, 0.0]), 0.0);
     }
 
     #[test]

@@ -196,12 +196,18 @@ fn monotone_root(coef: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
             .enumerate()
             .fold(0.0, |acc, (i, c)| acc * t + c * (degree - i) as f64);
         let newton = t - f / df;
-        t = if df != 0.0 && newton > a && newton < b {
-            newton
+        let tolerance = 1e-15 * (a.abs() + b.abs()).max(1e-300);
+        if df != 0.0 && newton > a && newton < b {
+            // Newton closes in from one side and leaves the bracket wide: stop on its step.
+            let step = (newton - t).abs();
+            t = newton;
+            if step <= tolerance {
+                break;
+            }
         } else {
-            0.5 * (a + b)
-        };
-        if (b - a) <= 1e-15 * (a.abs() + b.abs()).max(1e-300) {
+            t = 0.5 * (a + b);
+        }
+        if (b - a) <= tolerance {
             break;
         }
     }
