@@ -21,6 +21,7 @@ mod items;
 mod keywords;
 mod media;
 mod objects;
+mod placement;
 mod poly;
 mod stream;
 mod sweeps;
@@ -84,6 +85,8 @@ pub struct Evaluator<'w> {
     pub clock: crate::lang::AnimationClock,
     /// What the scene's objects and values take, against the memory budget.
     budget: budget::Budget,
+    /// Objects built for `trace`, `inside` and the extents.
+    placements: placement::Placements,
 }
 
 impl<'w> Evaluator<'w> {
@@ -117,6 +120,7 @@ impl<'w> Evaluator<'w> {
             debug_output: String::new(),
             clock: crate::lang::AnimationClock::default(),
             budget: budget::Budget::new(budget::default_memory_budget()),
+            placements: placement::Placements::default(),
         }
     }
 
