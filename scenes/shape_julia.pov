@@ -1,5 +1,6 @@
-// Julia fractals: quaternion sqr and cube, hypercomplex sqr, and a quaternion one cut open by
-// a box in a difference, each under its own scale and rotation.
+// Julia fractals: quaternion sqr and cube, and a quaternion one cut open by a box in a
+// difference, each under its own scale and rotation. Hypercomplex ones are left out: POV-Ray
+// misses parts of them that its own inside test holds (docs/language.md, julia_fractal).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 4, -9> look_at <0, 0.8, 0> right x*image_width/image_height angle 50 }
@@ -22,14 +23,6 @@ julia_fractal {
   precision 30
   scale 1.2 rotate <20, -40, 0> translate <0, 1.2, 1.5>
   pigment { color rgb <0.2, 0.7, 0.3> } finish { F }
-}
-julia_fractal {
-  <0.2, 0.1, 0.59, -0.2>
-  hypercomplex sqr
-  max_iteration 7
-  precision 20
-  scale 0.8 rotate <83, 0, -70> translate <3, 1.2, 1>
-  pigment { color rgb <0.2, 0.3, 0.9> } finish { F }
 }
 difference {
   julia_fractal {

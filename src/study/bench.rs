@@ -125,16 +125,44 @@ fn shape_world(name: &str) -> World {
             b.tables.lathes.push(LatheData::new(&segments));
             ShapeKind::Lathe(0)
         }
-        _ => ShapeKind::Sphere {
+        other => algebraic_shape(other, &mut b.tables).unwrap_or(ShapeKind::Sphere {
             center: DVec3::ZERO,
             radius: 1.0,
-        },
+        }),
     };
     // Tilted towards the camera so that caps and sides both show.
     let tilt = Transform::rotate(DVec3::new(-60.0, 20.0, 0.0));
     let item = b.primitive(shape, &tilt, 0, 0);
     b.add_top(item);
     b.build()
+}
+
+/// The poly and julia_fractal lines' shapes: the sextic rounded cube x^6 + y^6 + z^6 +
+/// 6 x^2 y^2 z^2 = 1 of scenes/shape_poly.pov, and the quaternion sqr julia of
+/// scenes/shape_julia.pov (8 iterations, precision 20).
+fn algebraic_shape(name: &str, tables: &mut crate::geometry::ShapeTables) -> Option<ShapeKind> {
+    use crate::geometry::{JuliaData, PolyData, poly_term_count};
+    use crate::scene::JuliaFractal;
+    match name {
+        "poly" => {
+            let mut c = vec![0.0; poly_term_count(6)];
+            // x^6, x^2 y^2 z^2, y^6, z^6 and the constant, in poly's order.
+            for (i, v) in [(0, 1.0), (23, 6.0), (56, 1.0), (77, 1.0), (83, -1.0)] {
+                c[i] = v;
+            }
+            tables.polys.push(PolyData::new(6, &c));
+            Some(ShapeKind::Poly(0))
+        }
+        "julia" => {
+            tables.julias.push(JuliaData::new(&JuliaFractal {
+                c: [-0.083, 0.0, -0.83, -0.025],
+                max_iteration: 8,
+                ..JuliaFractal::default()
+            }));
+            Some(ShapeKind::Julia(0))
+        }
+        _ => None,
+    }
 }
 
 struct RayFigures {
@@ -327,10 +355,10 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
             last.2 / first.2
         ));
     }
-    for name in ["sphere", "prism", "sor", "lathe"] {
+    for name in ["sphere", "prism", "sor", "lathe", "poly", "julia"] {
         let figures = trace(&shape_world(name), options.rays);
         line(format!(
-            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe)",
+            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe, sextic poly, quaternion julia)",
             figures.camera_rate,
             figures.shadow_rate,
             100.0 * figures.hit_fraction,

@@ -136,11 +136,16 @@ pub(super) fn inside(ev: &mut Evaluator<'_>, call: &Call<'_>) -> R<Value> {
 }
 
 /// Reads `trace`'s fourth argument: the name of the variable that receives the normal,
-/// declared or not, carried to the call as a string.
+/// carried to the call as a string. It must exist already, as POV-Ray requires ("Expected
+/// ')', undeclared identifier found instead").
 pub(super) fn normal_name(ev: &mut Evaluator<'_>) -> R<(Value, Span)> {
     let tok = ev.next()?;
     match tok.ident() {
-        Some(name) => Ok((Value::Str(Rc::from(name)), tok.span)),
+        Some(name) if ev.lookup(name).is_some() => Ok((Value::Str(Rc::from(name)), tok.span)),
+        Some(name) => Err(ev.err(
+            tok.span,
+            format!("trace's normal variable `{name}` must be declared before the call"),
+        )),
         None => Err(ev.expected("a variable name to receive trace's normal", &tok)),
     }
 }

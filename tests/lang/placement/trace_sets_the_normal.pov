@@ -1,5 +1,7 @@
-// The normal variable need not exist before the call; a miss sets it to <0, 0, 0>.
+// The normal variable gets the unit outward normal; a miss sets it to <0, 0, 0>.
 #declare S = sphere { 0, 1 translate <0, 0, 2> }
+#declare N = 0;
+#declare M = 0;
 #declare P = trace(S, <0, 0, -5>, z, N);
 #declare Q = trace(S, <0, 3, -5>, z, M);
 #declare Lo = min_extent(S);
