@@ -2,8 +2,8 @@
 
 mod aabb;
 mod blob;
-mod julia;
 mod bvh;
+mod julia;
 mod poly;
 mod prism;
 mod profile;

@@ -192,10 +192,8 @@ impl ShapeKind {
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_max: f64, tables: &ShapeTables) -> Option<f64> {
-        if let ShapeKind::Prism(_)
-        | ShapeKind::Sor(_)
-        | ShapeKind::Lathe(_)
-        | ShapeKind::Poly(_) = *self
+        if let ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) | ShapeKind::Poly(_) =
+            *self
         {
             let mut best = t_max;
             self.each_hit(ray, tables, |t| {
@@ -318,10 +316,7 @@ impl ShapeKind {
                 }
                 r
             }
-            ShapeKind::Prism(_)
-            | ShapeKind::Sor(_)
-            | ShapeKind::Lathe(_)
-            | ShapeKind::Poly(_) => {
+            ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) | ShapeKind::Poly(_) => {
                 let mut r = Roots::default();
                 self.each_hit(ray, tables, |t| r.push(t));
                 r.sort();

@@ -6,8 +6,8 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    Aabb, BlobData, BlobPart, CsgOp, Item, JuliaData, LatheData, PolyData, PolygonData, PrismData, ShapeKind, SorData,
-    Superellipsoid, Transform, TriangleData, World, WorldBuilder, flags,
+    Aabb, BlobData, BlobPart, CsgOp, Item, JuliaData, LatheData, PolyData, PolygonData, PrismData,
+    ShapeKind, SorData, Superellipsoid, Transform, TriangleData, World, WorldBuilder, flags,
 };
 use crate::scene::{
     Blob, BlobComponentKind, Camera, Colour, GlobalSettings, Interior, Object, ObjectFlags, Scene,
@@ -473,31 +473,8 @@ impl Builder {
                     None,
                 )
             }
-            Shape::Quartic { ref coefficients } => {
-                let mut q = [0.0; 35];
-                for (slot, c) in q.iter_mut().zip(coefficients) {
-                    *slot = *c;
-                }
-                self.world.tables.quartics.push(q);
-                (
-                    ShapeKind::Quartic((self.world.tables.quartics.len() - 1) as u32),
-                    None,
-                )
-            }
-            Shape::Poly {
-                order,
-                ref coefficients,
-            } => {
-                let tables = &mut self.world.tables;
-                tables
-                    .polys
-                    .push(PolyData::new(order as usize, coefficients));
-                (ShapeKind::Poly((tables.polys.len() - 1) as u32), None)
-            }
-            Shape::Julia(ref julia) => {
-                let tables = &mut self.world.tables;
-                tables.julias.push(JuliaData::new(julia));
-                (ShapeKind::Julia((tables.julias.len() - 1) as u32), None)
+            Shape::Quartic { .. } | Shape::Poly { .. } | Shape::Julia(_) => {
+                (self.algebraic_shape(shape)?, None)
             }
             Shape::Polygon { ref points } => {
                 let (data, frame) = polygon(points)?;
@@ -529,6 +506,35 @@ impl Builder {
             | Shape::Merge(_)
             | Shape::Intersection(_)
             | Shape::Difference(_) => return None,
+        })
+    }
+
+    /// The table entry of a quartic, poly or julia_fractal (`None` for other shapes).
+    fn algebraic_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
+        let tables = &mut self.world.tables;
+        Some(match *shape {
+            Shape::Quartic { ref coefficients } => {
+                let mut q = [0.0; 35];
+                for (slot, c) in q.iter_mut().zip(coefficients) {
+                    *slot = *c;
+                }
+                tables.quartics.push(q);
+                ShapeKind::Quartic((tables.quartics.len() - 1) as u32)
+            }
+            Shape::Poly {
+                order,
+                ref coefficients,
+            } => {
+                tables
+                    .polys
+                    .push(PolyData::new(order as usize, coefficients));
+                ShapeKind::Poly((tables.polys.len() - 1) as u32)
+            }
+            Shape::Julia(ref julia) => {
+                tables.julias.push(JuliaData::new(julia));
+                ShapeKind::Julia((tables.julias.len() - 1) as u32)
+            }
+            _ => return None,
         })
     }
 

@@ -88,8 +88,10 @@ impl Evaluator<'_> {
             None => (DVec3::splat(-HUGE_EXTENT), DVec3::splat(HUGE_EXTENT)),
             Some(b) if b.is_empty() => (DVec3::ZERO, DVec3::ZERO),
             Some(b) => (
-                b.min.clamp(DVec3::splat(-HUGE_EXTENT), DVec3::splat(HUGE_EXTENT)),
-                b.max.clamp(DVec3::splat(-HUGE_EXTENT), DVec3::splat(HUGE_EXTENT)),
+                b.min
+                    .clamp(DVec3::splat(-HUGE_EXTENT), DVec3::splat(HUGE_EXTENT)),
+                b.max
+                    .clamp(DVec3::splat(-HUGE_EXTENT), DVec3::splat(HUGE_EXTENT)),
             ),
         })
     }
@@ -109,11 +111,14 @@ pub(super) fn trace(ev: &mut Evaluator<'_>, call: &Call<'_>) -> R<Value> {
     let start = ev.vector_arg(call, 1)?;
     let direction = ev.vector_arg(call, 2)?;
     let ray = Ray::new(start, direction);
-    let hit = scene.as_ref().filter(|_| direction != DVec3::ZERO).and_then(|s| {
-        let hit = s.world.intersect(&ray, f64::INFINITY, 0)?;
-        let surface = s.world.surface(&ray, &hit);
-        Some((surface.point, surface.normal))
-    });
+    let hit = scene
+        .as_ref()
+        .filter(|_| direction != DVec3::ZERO)
+        .and_then(|s| {
+            let hit = s.world.intersect(&ray, f64::INFINITY, 0)?;
+            let surface = s.world.surface(&ray, &hit);
+            Some((surface.point, surface.normal))
+        });
     let (point, normal) = hit.unwrap_or((DVec3::ZERO, DVec3::ZERO));
     ev.set_normal(call, normal);
     Ok(vector(point))

@@ -113,7 +113,10 @@ impl Evaluator<'_> {
     /// `<c0, c1, ...>` with exactly as many coefficients as the order has terms.
     fn coefficient_list(&mut self, order: usize, what: &str) -> R<Vec<f64>> {
         let want = poly_term_count(order);
-        let open = self.expect(Punct::Lt, &format!("to open the {what}'s {want} coefficients"))?;
+        let open = self.expect(
+            Punct::Lt,
+            &format!("to open the {what}'s {want} coefficients"),
+        )?;
         let mut coefficients = Vec::with_capacity(want);
         let mut span = open.span;
         loop {
@@ -223,7 +226,9 @@ impl Evaluator<'_> {
             "asin" | "acos" | "tan" | "atan" | "asinh" | "acosh" | "tanh" | "atanh" => {
                 return Err(self.err(
                     tok.span,
-                    format!("unsupported: the julia_fractal function `{word}` is not supported yet"),
+                    format!(
+                        "unsupported: the julia_fractal function `{word}` is not supported yet"
+                    ),
                 ));
             }
             _ => return Ok(false),
