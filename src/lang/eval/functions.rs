@@ -496,7 +496,8 @@ mod tests {
     use super::*;
     use crate::lang::{LoadOptions, load_scene_source};
 
-    const PRELUDE: &str = "#declare Arr = array[2] {1, 2}; #declare Obj = sphere { 0, 1 }\n";
+    const PRELUDE: &str =
+        "#declare Arr = array[2] {1, 2}; #declare Obj = sphere { 0, 1 } #declare N = <0, 0, 0>;\n";
 
     fn run(call: &str) -> Result<(), Diagnostic> {
         let src = format!("{PRELUDE}#declare R = {call};\n");
