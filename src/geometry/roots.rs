@@ -96,16 +96,17 @@ pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
     out
 }
 
-/// Up to six roots, sorted, without allocation (for the degree-6 polynomials of lathes).
+/// Up to seven roots, sorted, without allocation (for the degree-6 polynomials of lathes
+/// and the degree-7 ones of `poly`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WideRoots {
-    pub values: [f64; 6],
+    pub values: [f64; 7],
     pub len: usize,
 }
 
 impl WideRoots {
     fn push(&mut self, t: f64) {
-        if self.len < 6 {
+        if self.len < 7 {
             self.values[self.len] = t;
             self.len += 1;
         }
@@ -116,10 +117,11 @@ impl WideRoots {
     }
 }
 
-/// Roots in [lo, hi] (finite) of a polynomial of degree at most 6, highest degree first,
+/// Roots in [lo, hi] (finite) of a polynomial of degree at most 7, highest degree first,
 /// found as [`roots_in`] finds them: between the roots of the derivative, each interval
 /// monotone.
 pub fn roots_in_wide(coef: &[f64], lo: f64, hi: f64) -> WideRoots {
+    debug_assert!(coef.len() <= 8, "degree above 7");
     let start = coef.iter().position(|&c| c != 0.0).unwrap_or(coef.len());
     let coef = &coef[start..];
     let degree = coef.len().saturating_sub(1);
@@ -130,7 +132,7 @@ pub fn roots_in_wide(coef: &[f64], lo: f64, hi: f64) -> WideRoots {
         }
         return out;
     }
-    let mut derivative = [0.0; 6];
+    let mut derivative = [0.0; 7];
     for (i, c) in coef[..degree].iter().enumerate() {
         derivative[i] = c * (degree - i) as f64;
     }
@@ -194,12 +196,18 @@ fn monotone_root(coef: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
             .enumerate()
             .fold(0.0, |acc, (i, c)| acc * t + c * (degree - i) as f64);
         let newton = t - f / df;
-        t = if df != 0.0 && newton > a && newton < b {
-            newton
+        let tolerance = 1e-15 * (a.abs() + b.abs()).max(1e-300);
+        if df != 0.0 && newton > a && newton < b {
+            // Newton closes in from one side and leaves the bracket wide: stop on its step.
+            let step = (newton - t).abs();
+            t = newton;
+            if step <= tolerance {
+                break;
+            }
         } else {
-            0.5 * (a + b)
-        };
-        if (b - a) <= 1e-15 * (a.abs() + b.abs()).max(1e-300) {
+            t = 0.5 * (a + b);
+        }
+        if (b - a) <= tolerance {
             break;
         }
     }
@@ -240,6 +248,100 @@ mod tests {
             assert!((got - want as f64).abs() < 1e-9, "{got} vs {want}");
         }
         assert_eq!(roots_in_wide(&p, 2.5, 4.5).len, 2);
+    }
+
+    /// The coefficients (highest first) of the product of (t - r) over `roots`.
+    fn from_roots(roots: &[f64]) -> Vec<f64> {
+        let mut p = vec![1.0];
+        for &r in roots {
+            let mut next = vec![0.0; p.len() + 1];
+            for (i, c) in p.iter().enumerate() {
+                next[i] += c;
+                next[i + 1] -= c * r;
+            }
+            p = next;
+        }
+        p
+    }
+
+    #[test]
+    fn degree_seven_with_seven_roots() {
+        let want = [-2.5, -1.0, -0.25, 0.5, 1.5, 2.0, 3.75];
+        let r = roots_in_wide(&from_roots(&want), -10.0, 10.0);
+        assert_eq!(r.len, 7, "{r:?}");
+        for (got, want) in r.as_slice().iter().zip(want) {
+            assert!((got - want).abs() < 1e-9, "{got} vs {want}");
+        }
+    }
+
+    #[test]
+    fn near_double_roots_of_degree_five_to_seven() {
+        // Two roots 1e-4 apart beside simple ones, with a pair of complex roots in the
+        // degree-7 case (times t^2 + 1).
+        let close = [0.7, 0.7001];
+        for (extra, complex) in [
+            (&[-1.0, 2.0, 3.0][..], false),
+            (&[-1.0, 2.0, 3.0, 4.0], false),
+            (&[-1.0, 2.0, 3.0, 4.0, 5.0], false),
+            (&[-2.0, 1.5, 3.0], true),
+        ] {
+            let mut roots: Vec<f64> = close.iter().chain(extra).copied().collect();
+            let mut p = from_roots(&roots);
+            if complex {
+                // (t^2 + 1) p: two roots off the real line.
+                let mut q = vec![0.0; p.len() + 2];
+                for (i, c) in p.iter().enumerate() {
+                    q[i] += c;
+                    q[i + 2] += c;
+                }
+                p = q;
+            }
+            roots.sort_by(f64::total_cmp);
+            let r = roots_in_wide(&p, -10.0, 10.0);
+            assert_eq!(r.as_slice().len(), roots.len(), "{r:?} for {roots:?}");
+            for (got, want) in r.as_slice().iter().zip(&roots) {
+                assert!((got - want).abs() < 1e-7, "{got} vs {want}");
+            }
+        }
+    }
+
+    #[test]
+    fn an_exact_double_root_is_found_at_most_once() {
+        // (t - 1)^2 (t + 2)(t - 3)(t - 4): the tangency gives one root or none, never two
+        // far apart.
+        let p = from_roots(&[1.0, 1.0, -2.0, 3.0, 4.0]);
+        let r = roots_in_wide(&p, -10.0, 10.0);
+        let near_one: Vec<f64> = r
+            .as_slice()
+            .iter()
+            .copied()
+            .filter(|t| (t - 1.0).abs() < 1e-3)
+            .collect();
+        assert!(near_one.len() <= 1, "{r:?}");
+        assert_eq!(r.len - near_one.len(), 3, "{r:?}");
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn separated_roots_of_degree_five_to_seven_are_all_found(
+            raw in proptest::collection::vec(-4.0f64..4.0, 5..=7),
+            scale in 0.5f64..3.0,
+        ) {
+            let mut roots: Vec<f64> = raw;
+            roots.sort_by(f64::total_cmp);
+            // Keep them at least 0.05 apart so each is simple.
+            for i in 1..roots.len() {
+                if roots[i] - roots[i - 1] < 0.05 {
+                    roots[i] = roots[i - 1] + 0.05;
+                }
+            }
+            let p: Vec<f64> = from_roots(&roots).iter().map(|c| c * scale).collect();
+            let r = roots_in_wide(&p, -20.0, 20.0);
+            proptest::prop_assert_eq!(r.len, roots.len(), "{:?} for {:?}", r, roots);
+            for (got, want) in r.as_slice().iter().zip(&roots) {
+                proptest::prop_assert!((got - want).abs() < 1e-7, "{} vs {}", got, want);
+            }
+        }
     }
 
     #[test]

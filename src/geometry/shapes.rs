@@ -7,9 +7,11 @@ use std::f64::consts::{PI, TAU};
 use glam::{DVec2, DVec3};
 
 use super::blob::BlobData;
-use super::isosurface::IsoData;
 use super::height_field::HeightFieldData;
+use super::isosurface::IsoData;
+use super::julia::JuliaData;
 use super::mesh::MeshData;
+use super::poly::PolyData;
 use super::prism::PrismData;
 use super::revolve::{LatheData, SorData};
 use super::roots::{Roots, pair_from_q, quadratic, roots_in};
@@ -32,6 +34,8 @@ pub struct ShapeTables {
     pub isosurfaces: Vec<IsoData>,
     pub meshes: Vec<MeshData>,
     pub height_fields: Vec<HeightFieldData>,
+    pub polys: Vec<PolyData>,
+    pub julias: Vec<JuliaData>,
 }
 
 impl ShapeTables {
@@ -94,6 +98,8 @@ impl ShapeTables {
                 .iter()
                 .map(HeightFieldData::memory_bytes)
                 .sum::<usize>()
+            + self.polys.iter().map(PolyData::memory_bytes).sum::<usize>()
+            + self.julias.capacity() * size_of::<JuliaData>()
     }
 }
 
@@ -169,6 +175,10 @@ pub enum ShapeKind {
     Mesh(u32),
     /// A grid of heights; a hit names its cell and triangle.
     HeightField(u32),
+    /// `poly`, `cubic`, `polynomial`: up to seven crossings, read as prisms are.
+    Poly(u32),
+    /// `julia_fractal`: read as prisms are.
+    Julia(u32),
 }
 
 impl ShapeKind {
@@ -179,7 +189,10 @@ impl ShapeKind {
                 center - DVec3::splat(radius),
                 center + DVec3::splat(radius),
             )),
-            ShapeKind::Plane { .. } | ShapeKind::Quadric(_) | ShapeKind::Quartic(_) => None,
+            ShapeKind::Plane { .. }
+            | ShapeKind::Quadric(_)
+            | ShapeKind::Quartic(_)
+            | ShapeKind::Poly(_) => None,
             ShapeKind::Box { min, max } => Some(Aabb::new(min, max)),
             ShapeKind::Cone { r0, r1, .. } => {
                 let r = r0.abs().max(r1.abs());
@@ -212,6 +225,7 @@ impl ShapeKind {
             ShapeKind::Isosurface(i) => Some(tables.isosurfaces[i as usize].bounds()),
             ShapeKind::Mesh(i) => Some(tables.meshes[i as usize].bounds()),
             ShapeKind::HeightField(i) => Some(tables.height_fields[i as usize].bounds()),
+            ShapeKind::Julia(i) => Some(tables.julias[i as usize].bounds()),
         }
     }
 
@@ -222,7 +236,9 @@ impl ShapeKind {
         if let ShapeKind::Mesh(_) | ShapeKind::HeightField(_) = *self {
             return self.intersect_part(ray, t_max, tables).map(|h| h.0);
         }
-        if let ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) = *self {
+        if let ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) | ShapeKind::Poly(_) =
+            *self
+        {
             let mut best = t_max;
             self.each_hit(ray, tables, |t| {
                 if t > 0.0 && t < best {
@@ -242,7 +258,7 @@ impl ShapeKind {
             });
             return found;
         }
-        if let ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) = *self {
+        if let ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Julia(_) = *self {
             // Crossings come in increasing order: stop at the first ahead of the origin.
             let mut found = None;
             self.crossings(ray, tables, |t| {
@@ -320,7 +336,11 @@ impl ShapeKind {
             ShapeKind::Prism(i) => tables.prisms[i as usize].each_hit(ray, f),
             ShapeKind::Sor(i) => tables.sors[i as usize].each_hit(ray, f),
             ShapeKind::Lathe(i) => tables.lathes[i as usize].each_hit(ray, f),
-            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Isosurface(_) => {
+            ShapeKind::Poly(i) => tables.polys[i as usize].each_hit(ray, f),
+            ShapeKind::Superellipsoid(_)
+            | ShapeKind::Blob(_)
+            | ShapeKind::Isosurface(_)
+            | ShapeKind::Julia(_) => {
                 self.crossings(ray, tables, |t| {
                     f(t);
                     true
@@ -344,6 +364,7 @@ impl ShapeKind {
             ShapeKind::Superellipsoid(s) => s.each_hit(ray, f),
             ShapeKind::Blob(i) => tables.blobs[i as usize].each_hit(ray, f),
             ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].each_hit(ray, f),
+            ShapeKind::Julia(i) => tables.julias[i as usize].each_hit(ray, f),
             _ => {}
         }
     }
@@ -409,13 +430,16 @@ impl ShapeKind {
                 }
                 r
             }
-            ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) => {
+            ShapeKind::Prism(_) | ShapeKind::Sor(_) | ShapeKind::Lathe(_) | ShapeKind::Poly(_) => {
                 let mut r = Roots::default();
                 self.each_hit(ray, tables, |t| r.push(t));
                 r.sort();
                 r
             }
-            ShapeKind::Superellipsoid(_) | ShapeKind::Blob(_) | ShapeKind::Isosurface(_) => {
+            ShapeKind::Superellipsoid(_)
+            | ShapeKind::Blob(_)
+            | ShapeKind::Isosurface(_)
+            | ShapeKind::Julia(_) => {
                 let mut r = Roots::default();
                 self.each_hit(ray, tables, |t| r.push(t));
                 r
@@ -489,6 +513,8 @@ impl ShapeKind {
             ShapeKind::Superellipsoid(s) => s.gradient(p),
             ShapeKind::Blob(i) => tables.blobs[i as usize].normal(p),
             ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].normal(p),
+            ShapeKind::Poly(i) => tables.polys[i as usize].gradient(p),
+            ShapeKind::Julia(i) => tables.julias[i as usize].normal(p),
             ShapeKind::Triangle(i) => {
                 let t = &tables.triangles[i as usize];
                 t.e1.cross(t.e2)
@@ -604,6 +630,8 @@ impl ShapeKind {
             ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].inside(p),
             ShapeKind::Mesh(i) => tables.meshes[i as usize].inside(p),
             ShapeKind::HeightField(i) => tables.height_fields[i as usize].inside(p),
+            ShapeKind::Poly(i) => tables.polys[i as usize].inside(p),
+            ShapeKind::Julia(i) => tables.julias[i as usize].inside(p),
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }

@@ -327,7 +327,25 @@ impl World {
             CsgOp::Union | CsgOp::Merge => {
                 children.try_fold(Aabb::EMPTY, |acc, b| Some(acc.union(&b?)))
             }
-            CsgOp::Difference | CsgOp::Bound => children.next().flatten(),
+            CsgOp::Difference => children.next().flatten(),
+            // POV-Ray bounds the object by its bounds' box (as `max_extent` shows), and
+            // its traversal then culls by that box too; only quartics and polys keep
+            // their bounds, and those are unbounded themselves.
+            CsgOp::Bound => {
+                let own = children.next().flatten();
+                let bounds = node.children[1..]
+                    .iter()
+                    .map(|&c| self.item_bounds(c))
+                    .try_fold(None, |acc: Option<Aabb>, b| {
+                        let b = b?;
+                        Some(Some(acc.map_or(b, |a| Aabb {
+                            min: a.min.max(b.min),
+                            max: a.max.min(b.max),
+                        })))
+                    })
+                    .flatten();
+                bounds.or(own)
+            }
             CsgOp::Intersection | CsgOp::Clip => {
                 // Each bounded child limits the whole; unbounded ones do not.
                 let mut acc: Option<Aabb> = None;
@@ -698,6 +716,15 @@ impl World {
     /// The deepest leaf's depth in the BVH (0 for a single leaf or an empty tree).
     pub fn bvh_depth(&self) -> usize {
         self.bvh.depth()
+    }
+
+    /// The box around every top-level item, as POV-Ray's `min_extent` and `max_extent`
+    /// give it; `None` when an item is unbounded.
+    pub fn extent(&self) -> Option<Aabb> {
+        if !self.unbounded.is_empty() {
+            return None;
+        }
+        Some(self.bounds())
     }
 
     pub fn bounds(&self) -> Aabb {

@@ -298,6 +298,8 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Torus { .. } => "torus",
             crate::scene::Shape::Quadric { .. } => "quadric",
             crate::scene::Shape::Quartic { .. } => "quartic",
+            crate::scene::Shape::Poly { .. } => "poly",
+            crate::scene::Shape::Julia(_) => "julia_fractal",
             crate::scene::Shape::Superellipsoid { .. } => "superellipsoid",
             crate::scene::Shape::Blob(_) => "blob",
             crate::scene::Shape::Isosurface(_) => "isosurface",

@@ -6,9 +6,9 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    Aabb, BlobData, BlobPart, CsgOp, HeightFieldData, Item, LatheData, MeshData, NO_INDEX,
-    PolygonData, PrismData, ShapeKind, SorData, Superellipsoid, Transform, TriangleData, World,
-    WorldBuilder, flags, tessellate_bicubic,
+    Aabb, BlobData, BlobPart, CsgOp, HeightFieldData, Item, JuliaData, LatheData, MeshData,
+    NO_INDEX, PolyData, PolygonData, PrismData, ShapeKind, SorData, Superellipsoid, Transform,
+    TriangleData, World, WorldBuilder, flags, tessellate_bicubic,
 };
 use crate::scene::{
     Blob, BlobComponentKind, Camera, Colour, GlobalSettings, Interior, Mesh, MeshFace, Object,
@@ -495,16 +495,8 @@ impl Builder {
                     None,
                 )
             }
-            Shape::Quartic { ref coefficients } => {
-                let mut q = [0.0; 35];
-                for (slot, c) in q.iter_mut().zip(coefficients) {
-                    *slot = *c;
-                }
-                self.world.tables.quartics.push(q);
-                (
-                    ShapeKind::Quartic((self.world.tables.quartics.len() - 1) as u32),
-                    None,
-                )
+            Shape::Quartic { .. } | Shape::Poly { .. } | Shape::Julia(_) => {
+                (self.algebraic_shape(shape)?, None)
             }
             Shape::Polygon { ref points } => {
                 let (data, frame) = polygon(points)?;
@@ -581,6 +573,35 @@ impl Builder {
                 data.finish();
                 tables.meshes.push(data);
                 ShapeKind::Mesh((tables.meshes.len() - 1) as u32)
+            }
+            _ => return None,
+        })
+    }
+
+    /// The table entry of a quartic, poly or julia_fractal (`None` for other shapes).
+    fn algebraic_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
+        let tables = &mut self.world.tables;
+        Some(match *shape {
+            Shape::Quartic { ref coefficients } => {
+                let mut q = [0.0; 35];
+                for (slot, c) in q.iter_mut().zip(coefficients) {
+                    *slot = *c;
+                }
+                tables.quartics.push(q);
+                ShapeKind::Quartic((tables.quartics.len() - 1) as u32)
+            }
+            Shape::Poly {
+                order,
+                ref coefficients,
+            } => {
+                tables
+                    .polys
+                    .push(PolyData::new(order as usize, coefficients));
+                ShapeKind::Poly((tables.polys.len() - 1) as u32)
+            }
+            Shape::Julia(ref julia) => {
+                tables.julias.push(JuliaData::new(julia));
+                ShapeKind::Julia((tables.julias.len() - 1) as u32)
             }
             _ => return None,
         })

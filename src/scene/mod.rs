@@ -5,6 +5,7 @@
 
 mod camera;
 mod fog;
+mod julia;
 mod light;
 mod media;
 mod object;
@@ -14,6 +15,7 @@ mod texture;
 
 pub use camera::{Camera, CameraSpec};
 pub use fog::{Fog, FogKind, FogTurbulence};
+pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{

@@ -55,6 +55,16 @@ pub enum Shape {
     Quartic {
         coefficients: Vec<f64>,
     },
+    /// `poly { n, <...> }`, `cubic { <...> }` and `polynomial { n, xyz(i, j, k): c }`: the
+    /// polynomial of `order` 2 to 7, coefficients in POV-Ray's `poly` order (as `quartic`'s,
+    /// generalised: descending powers of x, then y, then z); the inside is where it is
+    /// negative.
+    Poly {
+        order: u8,
+        coefficients: Vec<f64>,
+    },
+    /// `julia_fractal { ... }`: a 3-D slice of a 4-D Julia set.
+    Julia(super::JuliaFractal),
     Triangle {
         corners: [DVec3; 3],
     },

@@ -129,10 +129,10 @@ fn shape_world(name: &str) -> World {
             b.tables.isosurfaces.push(bumpy_isosurface());
             ShapeKind::Isosurface(0)
         }
-        _ => ShapeKind::Sphere {
+        other => algebraic_shape(other, &mut b.tables).unwrap_or(ShapeKind::Sphere {
             center: DVec3::ZERO,
             radius: 1.0,
-        },
+        }),
     };
     // Tilted towards the camera so that caps and sides both show.
     let tilt = Transform::rotate(DVec3::new(-60.0, 20.0, 0.0));
@@ -342,6 +342,34 @@ fn triangle_lines(options: &BenchOptions, line: &mut impl FnMut(String)) {
     }
 }
 
+/// The poly and julia_fractal lines' shapes: the sextic rounded cube x^6 + y^6 + z^6 +
+/// 6 x^2 y^2 z^2 = 1 of scenes/shape_poly.pov, and the quaternion sqr julia of
+/// scenes/shape_julia.pov (8 iterations, precision 20).
+fn algebraic_shape(name: &str, tables: &mut crate::geometry::ShapeTables) -> Option<ShapeKind> {
+    use crate::geometry::{JuliaData, PolyData, poly_term_count};
+    use crate::scene::JuliaFractal;
+    match name {
+        "poly" => {
+            let mut c = vec![0.0; poly_term_count(6)];
+            // x^6, x^2 y^2 z^2, y^6, z^6 and the constant, in poly's order.
+            for (i, v) in [(0, 1.0), (23, 6.0), (56, 1.0), (77, 1.0), (83, -1.0)] {
+                c[i] = v;
+            }
+            tables.polys.push(PolyData::new(6, &c));
+            Some(ShapeKind::Poly(0))
+        }
+        "julia" => {
+            tables.julias.push(JuliaData::new(&JuliaFractal {
+                c: [-0.083, 0.0, -0.83, -0.025],
+                max_iteration: 8,
+                ..JuliaFractal::default()
+            }));
+            Some(ShapeKind::Julia(0))
+        }
+        _ => None,
+    }
+}
+
 struct RayFigures {
     camera_rate: f64,
     shadow_rate: f64,
@@ -475,10 +503,18 @@ fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
         "function: {:.1} M evaluations/s of a ten-operation function (x*x + y*y + z*z), one thread",
         function_rate() * 1e-6
     ));
-    for name in ["sphere", "prism", "sor", "lathe", "isosurface"] {
+    for name in [
+        "sphere",
+        "prism",
+        "sor",
+        "lathe",
+        "isosurface",
+        "poly",
+        "julia",
+    ] {
         let figures = trace(&shape_world(name), rays);
         line(format!(
-            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe; isosurface: bumpy sphere, max_gradient 2)",
+            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe; isosurface: bumpy sphere, max_gradient 2; sextic poly; quaternion julia)",
             figures.camera_rate,
             figures.shadow_rate,
             100.0 * figures.hit_fraction,

@@ -561,7 +561,12 @@ impl Evaluator<'_> {
         let r = (|| -> R<Token> {
             if !self.peek()?.is_punct(Punct::RParen) {
                 loop {
-                    args.push(self.expr()?);
+                    // trace's fourth argument names the variable that gets the normal.
+                    args.push(if name == "trace" && args.len() == 3 {
+                        placement_normal_name(self)?
+                    } else {
+                        self.expr()?
+                    });
                     if !self.eat(Punct::Comma)? {
                         break;
                     }
@@ -625,6 +630,8 @@ impl Evaluator<'_> {
         Ok(flat)
     }
 }
+
+use super::placement::normal_name as placement_normal_name;
 
 fn srgb_decode(v: f64) -> f64 {
     if v <= 0.04045 {

@@ -123,14 +123,14 @@ pub const BUILTINS: &[Builtin] = &[
     native("file_exists", Exactly(1), file_exists),
     float("floor", f64::floor),
     unsupported("function"),
-    unsupported("inside"),
+    native("inside", Exactly(2), super::placement::inside),
     float("int", f64::trunc),
     float("ln", f64::ln),
     float("log", f64::log10),
     native("max", Arity::AtLeastOne, |ev, c| fold(ev, c, f64::max)),
-    unsupported("max_extent"),
+    native("max_extent", Exactly(1), super::placement::max_extent),
     native("min", Arity::AtLeastOne, |ev, c| fold(ev, c, f64::min)),
-    unsupported("min_extent"),
+    native("min_extent", Exactly(1), super::placement::min_extent),
     native("mod", Exactly(2), |ev, c| divide(ev, c, |a, b| a % b)),
     unsupported("now"),
     native("pow", Exactly(2), |ev, c| {
@@ -164,7 +164,7 @@ pub const BUILTINS: &[Builtin] = &[
     unsupported("sum"),
     float("tan", f64::tan),
     float("tanh", f64::tanh),
-    unsupported("trace"),
+    native("trace", ThreeOrFour, super::placement::trace),
     native("val", Exactly(1), |ev, c| {
         Ok(Value::Float(
             ev.arg_s(c, 0)?.trim().parse::<f64>().unwrap_or(0.0),
@@ -496,7 +496,8 @@ mod tests {
     use super::*;
     use crate::lang::{LoadOptions, load_scene_source};
 
-    const PRELUDE: &str = "#declare Arr = array[2] {1, 2};\n";
+    const PRELUDE: &str =
+        "#declare Arr = array[2] {1, 2}; #declare Obj = sphere { 0, 1 } #declare N = <0, 0, 0>;\n";
 
     fn run(call: &str) -> Result<(), Diagnostic> {
         let src = format!("{PRELUDE}#declare R = {call};\n");
@@ -531,6 +532,9 @@ mod tests {
             "vnormalize" => "<1, 2, 3>",
             "vrotate" => "x, <0, 0, 90>",
             "vstr" => "3, <1, 2, 3>, \",\", 0, 1",
+            "inside" => "Obj, <0, 0, 0>",
+            "max_extent" | "min_extent" => "Obj",
+            "trace" => "Obj, <0, 0, -5>, z, N",
             _ => return None,
         })
     }

@@ -18,13 +18,15 @@ mod directives;
 mod expr;
 mod fog;
 mod functions;
-mod isosurface;
 mod height_field;
+mod isosurface;
 mod items;
 mod keywords;
 mod media;
 mod meshes;
 mod objects;
+mod placement;
+mod poly;
 mod stream;
 mod sweeps;
 mod text;
@@ -95,6 +97,8 @@ pub struct Evaluator<'w> {
     pub allow_write: Option<PathBuf>,
     /// The fonts `text` objects read, by path: read and converted once per scene.
     fonts: std::collections::HashMap<PathBuf, crate::scene::text::Font>,
+    /// Objects built for `trace`, `inside` and the extents.
+    placements: placement::Placements,
 }
 
 impl<'w> Evaluator<'w> {
@@ -131,6 +135,7 @@ impl<'w> Evaluator<'w> {
             data_files: std::collections::HashMap::new(),
             allow_write: None,
             fonts: std::collections::HashMap::new(),
+            placements: placement::Placements::default(),
         }
     }
 

@@ -74,6 +74,10 @@ const SHAPES: &[(&str, ShapeReader)] = &[
             None => Ok(ShapeRead::Skipped),
         }
     }),
+    ("poly", |ev, _| kept(ev.poly_items()?)),
+    ("cubic", |ev, _| kept(ev.cubic_items()?)),
+    ("polynomial", |ev, _| kept(ev.polynomial_items()?)),
+    ("julia_fractal", |ev, _| kept(ev.julia_items()?)),
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
@@ -87,17 +91,7 @@ pub fn is_object_keyword(word: &str) -> bool {
 
 /// Shapes and CSG kinds POV-Ray has that the scene model does not (yet).
 pub fn is_known_unsupported_shape(word: &str) -> bool {
-    matches!(
-        word,
-        "parametric"
-            | "julia_fractal"
-            | "cubic"
-            | "poly"
-            | "polynomial"
-            | "ovus"
-            | "sphere_sweep"
-            | "light_group"
-    )
+    matches!(word, "parametric" | "ovus" | "sphere_sweep" | "light_group")
 }
 
 impl Evaluator<'_> {
@@ -419,7 +413,7 @@ impl Evaluator<'_> {
                 "bounded_by" => {
                     self.next()?;
                     bounds = self.object_list("bounded_by", "clipped_by", &clipped)?;
-                    if matches!(object.shape, Shape::Quartic { .. }) {
+                    if matches!(object.shape, Shape::Quartic { .. } | Shape::Poly { .. }) {
                         object.bounded_by.clone_from(&bounds);
                     }
                     true

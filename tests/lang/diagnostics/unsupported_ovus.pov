@@ -1,7 +1,7 @@
-julia_fractal { <-0.08, 0, -0.83, -0.03> }
+ovus { 1, 0.5 }
 fog { distance 3 color rgb 1 }
 #declare T = text { ttf "a.ttf" "x" 1, 0 }
 object { T translate x }
 union { sphere { 0, 1 } lathe { linear_spline 2, <0,0>, <1,1> } }
 sphere { 0, 1 photons { target } }
-// error: 1:1 unsupported: `julia_fractal` is not supported yet
+// error: 1:1 unsupported: `ovus` is not supported yet
