@@ -11,8 +11,8 @@
 
 use std::path::Path;
 
-use super::super::diagnostics::Diagnostic;
-use super::super::syntax::{Token, TokenKind};
+use super::super::diagnostics::{Diagnostic, Span};
+use super::super::syntax::{Punct, Token, TokenKind};
 use super::Evaluator;
 use super::value::{ObjectValue, Value};
 use crate::scene::{HeightField, Object, Shape};
@@ -36,15 +36,14 @@ impl Evaluator<'_> {
     pub(super) fn height_field_items(&mut self, kw: &Token) -> R<Option<ObjectValue>> {
         let tok = self.peek()?;
         if tok.is_ident("function") {
-            if !self.skip_unsupported {
-                return Err(self.unsupported(&tok, "height_field { function ... }"));
-            }
-            self.warn(
-                tok.span,
-                "unsupported: `height_field { function ... }` is not supported yet; the object is left out",
-            );
-            self.skip_rest_of_block()?;
-            return Ok(None);
+            self.next()?;
+            let mut hf = self.function_heights(tok.span)?;
+            self.count_objects(1, hf.heights.len() * 4, kw.span)?;
+            self.height_field_options(&mut hf)?;
+            return Ok(Some(ObjectValue {
+                object: Some(Object::new(Shape::HeightField(hf))),
+                ..ObjectValue::default()
+            }));
         }
         let mut kind = None;
         if let Some(w) = tok.ident().filter(|w| IMAGE_TYPES.contains(w)) {
@@ -103,6 +102,54 @@ impl Evaluator<'_> {
         }))
     }
 
+    /// `W, H { body }` after `function`: the function sampled on a W x H grid. Measured
+    /// with POV-Ray's `trace`: point (i, j) of the grid reads f(i / (W - 1), 1 - j / (H - 1),
+    /// 0) (the function's y runs down the rows, as an image's do), and the value wraps as a
+    /// function pattern's does (-0.5 and 1.5 give 0.5, 1 stays 1).
+    fn function_heights(&mut self, span: Span) -> R<HeightField> {
+        let (w, ws) = self.expr()?;
+        let w = self.to_float(&w, ws)?;
+        self.eat(Punct::Comma)?;
+        let (h, hs) = self.expr()?;
+        let h = self.to_float(&h, hs)?;
+        if !(2.0..=MAX_FUNCTION_GRID).contains(&w) || !(2.0..=MAX_FUNCTION_GRID).contains(&h) {
+            return Err(self.err(
+                ws.join(hs),
+                format!("a function height field needs 2 to {MAX_FUNCTION_GRID} points each way, found {w} x {h}"),
+            ));
+        }
+        let body = self.function_after_keyword(span)?.body;
+        let (columns, rows) = (w as usize, h as usize);
+        let heights = HeightField::sample(columns, rows, |i, j| {
+            let x = i as f64 / (columns - 1) as f64;
+            let y = 1.0 - j as f64 / (rows - 1) as f64;
+            let p = glam::DVec3::new(x, y, 0.0);
+            let v = match &body {
+                crate::function::Body::Float(f) => f.at(p),
+                // A pigment gives its grey (measured: pure red, green and blue read 0.297,
+                // 0.589 and 0.114; filter and transmit change nothing).
+                crate::function::Body::Pigment(pig) => {
+                    let c = crate::appearance::evaluate_pigment(pig, p).rgb;
+                    0.297 * c.x + 0.589 * c.y + 0.114 * c.z
+                }
+            };
+            if (0.0..=1.0).contains(&v) {
+                v
+            } else if v.is_finite() {
+                v - v.floor()
+            } else {
+                0.0
+            }
+        });
+        Ok(HeightField {
+            columns,
+            rows,
+            heights: std::sync::Arc::new(heights),
+            smooth: false,
+            water_level: 0.0,
+        })
+    }
+
     /// `smooth`, `water_level w`, `hierarchy [b]`, and the image options POV-Ray accepts
     /// that change nothing here (`gamma`, `premultiplied`).
     fn height_field_options(&mut self, hf: &mut HeightField) -> R<()> {
@@ -130,6 +177,9 @@ impl Evaluator<'_> {
         }
     }
 }
+
+/// Most grid points a function height field may ask for along each side.
+const MAX_FUNCTION_GRID: f64 = 8192.0;
 
 /// The grid with its first row at z = 0: the image's bottom row.
 fn from_image(image: Heights) -> HeightField {

@@ -44,7 +44,7 @@ impl Evaluator<'_> {
     }
 
     /// The parameter list and body, after `function`.
-    fn function_after_keyword(&mut self, span: Span) -> R<Function> {
+    pub(super) fn function_after_keyword(&mut self, span: Span) -> R<Function> {
         let params = self.function_params()?;
         let open = self.expect(Punct::LBrace, "after `function`")?;
         self.enter(open.span)?;
