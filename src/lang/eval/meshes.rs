@@ -19,12 +19,7 @@ fn shape(s: Shape) -> ObjectValue {
     }
 }
 
-/// Collinear or coincident corners: POV-Ray drops such triangles.
-fn degenerate(c: &[DVec3; 3]) -> bool {
-    let (e1, e2) = (c[1] - c[0], c[2] - c[0]);
-    let n = e1.cross(e2).length();
-    !(n.is_finite() && n > 1e-12 * e1.length() * e2.length() && n > 0.0)
-}
+use super::objects::degenerate_triangle as degenerate;
 
 /// The faces as `face_indices` gives them, with where each was written.
 struct FaceList {
@@ -78,18 +73,8 @@ impl Evaluator<'_> {
             "triangle"
         };
         let open = self.block_start(word)?;
-        let mut corners = [DVec3::ZERO; 3];
-        let mut normals = [DVec3::ZERO; 3];
-        for i in 0..3 {
-            if i > 0 {
-                self.eat(Punct::Comma)?;
-            }
-            corners[i] = self.vector3()?;
-            if smooth {
-                self.eat(Punct::Comma)?;
-                normals[i] = self.vector3()?;
-            }
-        }
+        let (items, flat) = self.triangle_items(smooth)?;
+        let (corners, normals) = (items.corners, items.normals.unwrap_or_default());
         let mut uvs = None;
         let mut texture = None;
         loop {
@@ -109,7 +94,7 @@ impl Evaluator<'_> {
         }
         self.block_end(open, "the mesh triangle")?;
         self.count_objects(1, std::mem::size_of::<MeshFace>() + 72, tok.span)?;
-        if degenerate(&corners) {
+        if flat {
             return Ok(());
         }
         let base = mesh.vertices.len() as u32;

@@ -664,12 +664,12 @@ impl Evaluator<'_> {
 
 /// Corners (and normals) of one triangle as written.
 pub(super) struct TriangleItems {
-    corners: [DVec3; 3],
-    normals: Option<[DVec3; 3]>,
+    pub(super) corners: [DVec3; 3],
+    pub(super) normals: Option<[DVec3; 3]>,
 }
 
 /// Collinear or coincident corners: POV-Ray drops such triangles.
-fn degenerate_triangle(c: &[DVec3; 3]) -> bool {
+pub(super) fn degenerate_triangle(c: &[DVec3; 3]) -> bool {
     let e1 = c[1] - c[0];
     let e2 = c[2] - c[0];
     let n = e1.cross(e2).length();
@@ -679,7 +679,7 @@ fn degenerate_triangle(c: &[DVec3; 3]) -> bool {
 impl Evaluator<'_> {
     /// The corners of a `triangle` (or corners and normals of a `smooth_triangle`), after
     /// the opening brace; whether they are degenerate.
-    fn triangle_items(&mut self, smooth: bool) -> R<(TriangleItems, bool)> {
+    pub(super) fn triangle_items(&mut self, smooth: bool) -> R<(TriangleItems, bool)> {
         let mut corners = [DVec3::ZERO; 3];
         let mut normals = [DVec3::ZERO; 3];
         for i in 0..3 {
