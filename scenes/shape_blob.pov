@@ -1,4 +1,4 @@
-// Blobs: spheres melting together, cylinders with round ends and a negative component cutting a dent, a component under its own scale and rotation, a blob transformed as a whole, and one inside a difference.
+// Blobs: spheres melting together (their textures mixing where they meet, a component without one showing the blob's), cylinders with round ends and a negative component cutting a dent, a component under its own scale and rotation, a blob transformed as a whole, and one inside a difference.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 4, -9> look_at <0, 0.8, 0> right x*image_width/image_height angle 50 }
@@ -8,8 +8,8 @@ light_source { <6, 4, -8> color rgb 0.4 }
 plane { y, 0 pigment { color rgb <0.55, 0.6, 0.55> } }
 blob {
   threshold 0.6
-  sphere { <-0.5, 0, 0>, 1, 1 }
-  sphere { <0.5, 0.1, 0>, 1, 1 }
+  sphere { <-0.5, 0, 0>, 1, 1 texture { pigment { color rgb <0.95, 0.85, 0.1> } finish { F } } }
+  sphere { <0.5, 0.1, 0>, 1, 1 texture { pigment { color rgb <0.1, 0.3, 0.95> } finish { F } } }
   sphere { <0, 0.8, 0.2>, 0.8, strength 1.5 }
   translate <-3, 1, 1>
   pigment { color rgb <0.9, 0.2, 0.2> } finish { F }
@@ -18,7 +18,7 @@ blob {
   threshold 0.5
   cylinder { <-1, 0, 0>, <1, 0, 0>, 0.6, 2 }
   cylinder { <0, -0.2, -0.6>, <0, 1.4, 0.3>, 0.5, 1.5 }
-  sphere { <0.5, 0.4, -0.5>, 0.5, -3 }
+  sphere { <0.5, 0.4, -0.5>, 0.5, -3 pigment { color rgb <0.9, 0.9, 0.9> } finish { F } }
   translate <0, 0.6, 1.5>
   pigment { color rgb <0.2, 0.7, 0.3> } finish { F }
 }

@@ -72,19 +72,19 @@ pub fn texture_layers<'a>(texture: &'a Texture, at: impl Into<TexturePoint>) -> 
     layers
 }
 
-/// A mesh face with a texture per corner: each corner texture's top layer at the point,
-/// their colours mixed by the point's barycentric `weights` as POV-Ray mixes them, with
-/// the finish of the heaviest corner (exact when the corners share a finish, as for
-/// texture maps here).
+/// A surface that mixes textures (a mesh face with a texture per corner, a blob with
+/// textured components): each texture's top layer at the point, their colours mixed by
+/// `weights` as POV-Ray mixes them, with the finish of the heaviest (exact when they share
+/// a finish, as for texture maps here).
 pub fn blended_layers<'a>(
-    textures: [&'a Texture; 3],
-    weights: [f64; 3],
+    textures: impl Iterator<Item = (&'a Texture, f64)>,
     at: impl Into<TexturePoint>,
 ) -> Layers<'a> {
     let p = at.into();
     let mut colour = Colour::default();
+    let mut total = 0.0;
     let mut finish: Option<(&Finish, f64)> = None;
-    for (t, w) in textures.into_iter().zip(weights) {
+    for (t, w) in textures {
         let layers = texture_layers(t, p);
         let Some(top) = layers.iter().next() else {
             continue;
@@ -92,12 +92,18 @@ pub fn blended_layers<'a>(
         colour.rgb += top.colour.rgb * w;
         colour.filter += top.colour.filter * w;
         colour.transmit += top.colour.transmit * w;
+        total += w;
         if finish.is_none_or(|(_, best)| w > best) {
             finish = Some((top.finish, w));
         }
     }
     let mut out = Layers::default();
-    if let Some((finish, _)) = finish {
+    if let Some((finish, _)) = finish
+        && total > 0.0
+    {
+        colour.rgb /= total;
+        colour.filter /= total;
+        colour.transmit /= total;
         out.push(Layer { colour, finish });
     }
     out

@@ -17,6 +17,8 @@ pub struct BlobData {
     pub threshold: f64,
     pub parts: Vec<BlobPart>,
     pub bounds: Aabb,
+    /// Some component has a texture of its own, so the surface's texture is a mix.
+    pub textured: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,7 +28,12 @@ pub struct BlobPart {
     pub strength: f64,
     /// 0 for a sphere; the segment's length in radii for a cylinder.
     pub length: f64,
+    /// The component's own material, or `OWN_TEXTURE`: the blob's.
+    pub material: u32,
 }
+
+/// A component without a texture: it shows the blob's.
+pub const OWN_TEXTURE: u32 = u32::MAX;
 
 /// How close to its origin (in the blob's units) a ray ignores the surface it leaves.
 const DEPTH_TOLERANCE: f64 = 1e-6;
@@ -165,6 +172,21 @@ fn sphere_piece(o: DVec3, d: DVec3, s: f64, lo: f64, hi: f64, out: &mut Vec<Piec
 }
 
 impl BlobData {
+    /// The blob of `parts`, bounded by the reach of its positive components (a negative
+    /// one only takes away).
+    pub fn new(threshold: f64, parts: Vec<BlobPart>) -> BlobData {
+        let bounds = parts
+            .iter()
+            .filter(|p| p.strength > 0.0)
+            .fold(Aabb::EMPTY, |b, p| b.union(&p.bounds()));
+        BlobData {
+            threshold,
+            textured: parts.iter().any(|p| p.material != OWN_TEXTURE),
+            parts,
+            bounds,
+        }
+    }
+
     /// The summed field at a point of the blob's space.
     pub fn field(&self, p: DVec3) -> f64 {
         self.parts
@@ -178,6 +200,21 @@ impl BlobData {
 
     pub fn inside(&self, p: DVec3) -> bool {
         self.field(p) > self.threshold
+    }
+
+    /// The materials shown at a point and their weights: each component reaching it, by
+    /// the magnitude of the field it adds (POV-Ray's mix, measured on two, three and four
+    /// components with a negative one); `own` for a component without a texture.
+    pub fn texture_weights(&self, p: DVec3, own: u32) -> impl Iterator<Item = (u32, f64)> + '_ {
+        self.parts.iter().filter_map(move |part| {
+            let w = 1.0 - part.offset(p).length_squared();
+            let material = if part.material == OWN_TEXTURE {
+                own
+            } else {
+                part.material
+            };
+            (w > 0.0).then(|| (material, (part.strength * w * w).abs()))
+        })
     }
 
     /// Outward normal: minus the field's gradient.
@@ -268,19 +305,12 @@ mod tests {
                 * DAffine3::from_translation(-center),
             strength,
             length: 0.0,
+            material: OWN_TEXTURE,
         }
     }
 
     fn blob(threshold: f64, parts: Vec<BlobPart>) -> BlobData {
-        let bounds = parts
-            .iter()
-            .filter(|p| p.strength > 0.0)
-            .fold(Aabb::EMPTY, |b, p| b.union(&p.bounds()));
-        BlobData {
-            threshold,
-            parts,
-            bounds,
-        }
+        BlobData::new(threshold, parts)
     }
 
     fn hits(b: &BlobData, ray: &Ray) -> Vec<f64> {
@@ -354,6 +384,7 @@ mod tests {
                 to_local: DAffine3::IDENTITY,
                 strength: 1.0,
                 length: 2.0,
+                material: OWN_TEXTURE,
             }],
         );
         let r = 0.5f64.sqrt();
@@ -368,5 +399,27 @@ mod tests {
         let p = Ray::new(DVec3::new(-0.3, 0.0, 2.2) - 5.0 * d, d).at(h[0]);
         assert!((b.field(p) - 0.25).abs() < 1e-9, "{p}");
         assert!(b.inside(DVec3::new(0.0, 0.0, 2.5)) && !b.inside(DVec3::new(0.0, 0.0, 2.8)));
+    }
+
+    #[test]
+    fn texture_weights_are_each_components_field_magnitude() {
+        let mut red = sphere_part(DVec3::new(-0.6, 0.0, 0.0), 1.0, 1.0);
+        red.material = 3;
+        let untextured = sphere_part(DVec3::new(0.6, 0.0, 0.0), 1.0, 2.0);
+        let mut negative = sphere_part(DVec3::new(0.0, 0.5, 0.0), 1.0, -0.5);
+        negative.material = 5;
+        let far = sphere_part(DVec3::new(9.0, 0.0, 0.0), 1.0, 1.0);
+        let b = blob(0.3, vec![red, untextured, negative, far]);
+        assert!(b.textured);
+        let w: Vec<(u32, f64)> = b.texture_weights(DVec3::ZERO, 7).collect();
+        // (1 - 0.36)^2 = 0.4096 for both sides; (1 - 0.25)^2 = 0.5625; the far one is out
+        // of reach.
+        let expected = [(3, 0.4096), (7, 2.0 * 0.4096), (5, 0.5 * 0.5625)];
+        assert_eq!(w.len(), expected.len());
+        for ((m, x), (em, ex)) in w.iter().zip(expected) {
+            assert_eq!(*m, em);
+            assert!((x - ex).abs() < 1e-12, "{x} vs {ex}");
+        }
+        assert!(!blob(0.3, vec![far]).textured);
     }
 }

@@ -21,7 +21,7 @@ mod world;
 
 pub use aabb::Aabb;
 pub use bicubic::{MAX_STEPS as BICUBIC_MAX_STEPS, tessellate as tessellate_bicubic};
-pub use blob::{BlobData, BlobPart};
+pub use blob::{BlobData, BlobPart, OWN_TEXTURE};
 pub use bvh::Bvh;
 pub use height_field::HeightFieldData;
 pub use isosurface::{Container, IsoData};

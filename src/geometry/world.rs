@@ -83,11 +83,16 @@ pub struct SurfacePoint {
     pub blend: Option<MaterialBlend>,
 }
 
-/// Three materials and their weights at a point.
+/// A surface whose texture is a mix of materials at the point.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct MaterialBlend {
-    pub materials: [u32; 3],
-    pub weights: [f64; 3],
+pub enum MaterialBlend {
+    /// A mesh face's corner materials and the point's barycentric weights.
+    Corners {
+        materials: [u32; 3],
+        weights: [f64; 3],
+    },
+    /// A blob with textured components, at `local`, a point in its own space.
+    Blob { blob: u32, own: u32, local: DVec3 },
 }
 
 /// Where a texture is looked up: the world point, and the surface's (u, v) for patterns
@@ -638,21 +643,61 @@ impl World {
         }
     }
 
-    /// The corner materials and weights of a hit on a mesh face whose corners differ.
+    /// The materials mixed at a hit: a mesh face whose corners differ, or a blob with
+    /// textured components.
     fn blend(&self, p: &Primitive, part: u32, local: DVec3) -> Option<MaterialBlend> {
-        let ShapeKind::Mesh(i) = p.shape else {
-            return None;
-        };
-        let mesh = &self.tables.meshes[i as usize];
-        let materials = mesh.corner_materials(part, p.material)?;
-        if materials[0] == materials[1] && materials[1] == materials[2] {
-            return None;
+        match p.shape {
+            ShapeKind::Mesh(i) => {
+                let mesh = &self.tables.meshes[i as usize];
+                let materials = mesh.corner_materials(part, p.material)?;
+                if materials[0] == materials[1] && materials[1] == materials[2] {
+                    return None;
+                }
+                let w = mesh.barycentric(part, local);
+                Some(MaterialBlend::Corners {
+                    materials,
+                    weights: [w.x, w.y, w.z],
+                })
+            }
+            ShapeKind::Blob(i) if self.tables.blobs[i as usize].textured => {
+                Some(MaterialBlend::Blob {
+                    blob: i,
+                    own: p.material,
+                    local,
+                })
+            }
+            _ => None,
         }
-        let w = mesh.barycentric(part, local);
-        Some(MaterialBlend {
-            materials,
-            weights: [w.x, w.y, w.z],
-        })
+    }
+
+    /// The materials of a blend and their weights (not normalised).
+    pub fn blend_weights(&self, blend: &MaterialBlend) -> impl Iterator<Item = (u32, f64)> + '_ {
+        let (corners, blob) = match *blend {
+            MaterialBlend::Corners { materials, weights } => {
+                (Some(materials.into_iter().zip(weights)), None)
+            }
+            MaterialBlend::Blob { blob, own, local } => (
+                None,
+                Some(self.tables.blobs[blob as usize].texture_weights(local, own)),
+            ),
+        };
+        corners
+            .into_iter()
+            .flatten()
+            .chain(blob.into_iter().flatten())
+    }
+
+    /// The heaviest material of a blend, whose finish, normal and interior the point uses.
+    fn heaviest(&self, blend: &MaterialBlend) -> Option<u32> {
+        self.blend_weights(blend)
+            .fold(None, |best: Option<(u32, f64)>, (m, w)| {
+                if best.is_none_or(|(_, b)| w > b) {
+                    Some((m, w))
+                } else {
+                    best
+                }
+            })
+            .map(|(m, _)| m)
     }
 
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfacePoint {
@@ -667,6 +712,11 @@ impl World {
             (t.normal(normal), t.normal(shading))
         };
         let uv = self.uv(p, hit.part, point);
+        let blend = self.blend(p, hit.part, local);
+        let material = match &blend {
+            Some(b @ MaterialBlend::Blob { .. }) => self.heaviest(b).unwrap_or(p.material),
+            _ => self.hit_material(hit),
+        };
         let sign = if hit.flipped { -1.0 } else { 1.0 };
         let normal = normal.normalize_or(DVec3::Y) * sign;
         let mut shading_normal = shading.normalize_or(normal) * sign;
@@ -677,9 +727,9 @@ impl World {
             point,
             normal,
             shading_normal,
-            material: self.hit_material(hit),
+            material,
             uv,
-            blend: self.blend(p, hit.part, local),
+            blend,
         }
     }
 

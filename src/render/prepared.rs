@@ -6,8 +6,8 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    Aabb, BlobData, BlobPart, CsgOp, HeightFieldData, Item, JuliaData, LatheData, MeshData,
-    NO_INDEX, PolyData, PolygonData, PrismData, ShapeKind, SorData, Superellipsoid, Transform,
+    BlobData, BlobPart, CsgOp, HeightFieldData, Item, JuliaData, LatheData, MeshData, NO_INDEX,
+    OWN_TEXTURE, PolyData, PolygonData, PrismData, ShapeKind, SorData, Superellipsoid, Transform,
     TriangleData, World, WorldBuilder, flags, tessellate_bicubic,
 };
 use crate::scene::{
@@ -176,9 +176,10 @@ fn iso_data(iso: &crate::scene::Isosurface) -> crate::geometry::IsoData {
     }
 }
 
-fn blob_data(blob: &Blob) -> Option<BlobData> {
+/// The blob's field, with `materials[i]` the material of component i (`NONE`: the blob's).
+fn blob_data(blob: &Blob, materials: &[u32]) -> Option<BlobData> {
     let mut parts = Vec::with_capacity(blob.components.len());
-    for c in &blob.components {
+    for (c, &material) in blob.components.iter().zip(materials) {
         let r = c.radius.abs();
         if r <= 0.0 || !r.is_finite() {
             continue;
@@ -205,17 +206,10 @@ fn blob_data(blob: &Blob) -> Option<BlobData> {
             to_local,
             strength: c.strength,
             length,
+            material,
         });
     }
-    let bounds = parts
-        .iter()
-        .filter(|p| p.strength > 0.0)
-        .fold(Aabb::EMPTY, |b, p| b.union(&p.bounds()));
-    Some(BlobData {
-        threshold: blob.threshold,
-        parts,
-        bounds,
-    })
+    Some(BlobData::new(blob.threshold, parts))
 }
 
 /// What a CSG child inherits from its parents: texture, interior and flags.
@@ -306,7 +300,10 @@ impl Builder {
 
     /// A single shape with its object's transform (after the shape's own frame).
     fn primitive(&mut self, shape: &Shape, object: &Object, looks: Looks<'_>) -> Option<Item> {
-        let (kind, local) = self.shape_kind(shape)?;
+        let (kind, local) = match shape {
+            Shape::Blob(blob) => (self.blob(blob, looks)?, None),
+            _ => self.shape_kind(shape)?,
+        };
         let transform = match local {
             Some(frame) => frame.then(&object.transform),
             None => object.transform,
@@ -347,6 +344,25 @@ impl Builder {
             self.world
                 .primitive(kind, &object.transform, material, flags),
         )
+    }
+
+    /// A blob's table entry, with a material for each component's own texture (which
+    /// shares the blob's interior and flags).
+    fn blob(&mut self, blob: &Blob, looks: Looks<'_>) -> Option<ShapeKind> {
+        let materials: Vec<u32> = blob
+            .components
+            .iter()
+            .map(|c| {
+                c.texture.as_ref().map_or(OWN_TEXTURE, |t| {
+                    self.material(Looks {
+                        texture: t,
+                        ..looks
+                    })
+                })
+            })
+            .collect();
+        self.world.tables.blobs.push(blob_data(blob, &materials)?);
+        Some(ShapeKind::Blob((self.world.tables.blobs.len() - 1) as u32))
     }
 
     /// `item` clipped by the object's `clipped_by` shapes, which keep no flags of their own.
@@ -508,12 +524,13 @@ impl Builder {
             }
             Shape::Prism(_) | Shape::Sor(_) | Shape::Lathe(_) => (self.spline_shape(shape)?, None),
             Shape::Glyph(_) => (self.spline_shape(shape)?, None),
-            Shape::Superellipsoid { .. } | Shape::Isosurface(_) | Shape::Blob(_) => {
+            Shape::Superellipsoid { .. } | Shape::Isosurface(_) => {
                 return self.field_shape(shape);
             }
             Shape::HeightField(_) | Shape::BicubicPatch(_) => (self.grid_shape(shape)?, None),
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
+            | Shape::Blob(_)
             | Shape::Mesh(_)
             | Shape::Union(_)
             | Shape::Merge(_)
@@ -536,13 +553,6 @@ impl Builder {
                 self.world.tables.isosurfaces.push(iso_data(iso));
                 let i = self.world.tables.isosurfaces.len() - 1;
                 (ShapeKind::Isosurface(i as u32), None)
-            }
-            Shape::Blob(ref blob) => {
-                self.world.tables.blobs.push(blob_data(blob)?);
-                (
-                    ShapeKind::Blob((self.world.tables.blobs.len() - 1) as u32),
-                    None,
-                )
             }
             _ => return None,
         })

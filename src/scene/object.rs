@@ -245,6 +245,10 @@ pub struct BlobComponent {
     pub radius: f64,
     pub strength: f64,
     pub transform: Transform,
+    /// The component's own texture. POV-Ray shows, at a point of the surface, the textures
+    /// of the components reaching it mixed by |field| each adds there (measured); a
+    /// component without one lends the blob's.
+    pub texture: Option<Arc<Texture>>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -327,10 +331,22 @@ impl Object {
         if let Some(interior) = &mut self.interior {
             interior.transform_by(t);
         }
-        if let Shape::Mesh(mesh) = &mut self.shape {
-            for texture in &mut mesh.textures {
-                Arc::make_mut(texture).transform_by(t);
+        match &mut self.shape {
+            Shape::Mesh(mesh) => {
+                for texture in &mut mesh.textures {
+                    Arc::make_mut(texture).transform_by(t);
+                }
             }
+            Shape::Blob(blob) => {
+                for texture in blob
+                    .components
+                    .iter_mut()
+                    .filter_map(|c| c.texture.as_mut())
+                {
+                    Arc::make_mut(texture).transform_by(t);
+                }
+            }
+            _ => {}
         }
         if let Some(children) = self.shape.children_mut() {
             for child in children {

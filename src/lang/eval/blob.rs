@@ -1,5 +1,7 @@
 //! `superellipsoid { <e, n> }` and `blob { threshold t sphere {...} cylinder {...} ... }`.
 
+use std::sync::Arc;
+
 use super::super::diagnostics::Diagnostic;
 use super::super::syntax::{Punct, Token};
 use super::Evaluator;
@@ -71,6 +73,7 @@ impl Evaluator<'_> {
                         radius,
                         strength,
                         transform: Transform::IDENTITY,
+                        texture: None,
                     });
                 }
                 Some("sturm" | "hierarchy") => {
@@ -127,20 +130,27 @@ impl Evaluator<'_> {
         }
         let strength = self.float()?;
         let mut transform = Transform::IDENTITY;
+        // The component's texture is read as an object's is; a transform moves what is
+        // read before it.
+        let mut looks = Object::new(Shape::Union(Vec::new()));
+        let mut textures = 0;
         loop {
             if let Some(t) = self.transform_modifier()? {
                 transform = transform.then(&t);
+                if let Some(texture) = &mut looks.texture {
+                    Arc::make_mut(texture).transform_by(&t);
+                }
                 continue;
             }
             let tok = self.peek()?;
-            if tok.is_punct(Punct::RBrace) {
-                break;
+            match tok.ident() {
+                _ if tok.is_punct(Punct::RBrace) => break,
+                Some("texture") => self.texture_layer(&mut looks, &mut textures)?,
+                Some(w @ ("pigment" | "finish" | "normal")) => {
+                    self.appearance_modifier(&mut looks, w)?;
+                }
+                _ => return Err(self.stray_in_block(&tok, &what)),
             }
-            if let Some("texture" | "pigment" | "finish" | "normal") = tok.ident() {
-                self.unsupported_or_skip(&tok, "textures on blob components")?;
-                continue;
-            }
-            return Err(self.stray_in_block(&tok, &what));
         }
         self.block_end(open, &what)?;
         Ok(BlobComponent {
@@ -148,6 +158,7 @@ impl Evaluator<'_> {
             radius,
             strength,
             transform,
+            texture: looks.texture,
         })
     }
 }

@@ -387,16 +387,7 @@ impl Evaluator<'_> {
             };
             let known = match word.as_str() {
                 "texture" => {
-                    textures += 1;
-                    self.next()?;
-                    let top = self.texture_body(self.default_texture.clone())?;
-                    // A second `texture` layers over the first; the first replaces the default.
-                    let below = if textures > 1 {
-                        object.texture.take().map(Arc::unwrap_or_clone)
-                    } else {
-                        None
-                    };
-                    object.texture = Some(self.share_texture(Self::layer_texture(below, top)));
+                    self.texture_layer(object, &mut textures)?;
                     true
                 }
                 "clipped_by" => {
@@ -426,8 +417,23 @@ impl Evaluator<'_> {
         }
     }
 
+    /// `texture { }`: the object's `textures`-th. A second layers over the first; the first
+    /// replaces the default.
+    pub(super) fn texture_layer(&mut self, object: &mut Object, textures: &mut u32) -> R<()> {
+        *textures += 1;
+        self.next()?;
+        let top = self.texture_body(self.default_texture.clone())?;
+        let below = if *textures > 1 {
+            object.texture.take().map(Arc::unwrap_or_clone)
+        } else {
+            None
+        };
+        object.texture = Some(self.share_texture(Self::layer_texture(below, top)));
+        Ok(())
+    }
+
     /// `pigment`, `finish`, `normal`, `interior`, `material`; false for other words.
-    fn appearance_modifier(&mut self, object: &mut Object, word: &str) -> R<bool> {
+    pub(super) fn appearance_modifier(&mut self, object: &mut Object, word: &str) -> R<bool> {
         match word {
             "pigment" => self.edit_texture(object, |ev, mut t| {
                 t.pigment = ev.pigment_body(t.pigment)?;

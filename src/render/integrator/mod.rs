@@ -283,11 +283,12 @@ impl<'a> Integrator<'a> {
 
     /// The surface's own colour, layer by layer, then what it reflects and transmits.
     fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
-        let layers = match s.surface.blend {
+        let layers = match &s.surface.blend {
             Some(b) => blended_layers(
-                b.materials
-                    .map(|m| &self.scene.materials[m as usize].texture),
-                b.weights,
+                self.scene
+                    .world
+                    .blend_weights(b)
+                    .map(|(m, w)| (&self.scene.materials[m as usize].texture, w)),
                 &s.surface,
             ),
             None => texture_layers(&s.material.texture, &s.surface),
