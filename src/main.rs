@@ -247,6 +247,9 @@ struct BenchArgs {
     /// Runs of each for `--parse`; medians are printed.
     #[arg(long, default_value_t = 3)]
     parse_repeats: usize,
+    /// Only the function line and the shape lines (rays per second against one shape).
+    #[arg(long)]
+    shapes: bool,
 }
 
 #[derive(clap::Args)]
@@ -584,6 +587,10 @@ fn bench(args: BenchArgs) -> Result<ExitCode, String> {
         penumbra::study::parse_bench::run(&args.parse_counts, args.parse_repeats, |line| {
             println!("{line}");
         });
+        return Ok(ExitCode::SUCCESS);
+    }
+    if args.shapes {
+        penumbra::study::bench::shape_lines(args.rays, &mut |line| println!("{line}"));
         return Ok(ExitCode::SUCCESS);
     }
     let options = penumbra::study::bench::BenchOptions {

@@ -198,6 +198,11 @@ impl Emitter {
                 let ([a], d) = self.operands([&**a])?;
                 (Op::Math1(*f, a, d), d)
             }
+            Expr::Math2(f @ (Math2::Add | Math2::Sub), a, b)
+                if product(a).or(product(b)).is_some() =>
+            {
+                return self.fused(*f, a, b);
+            }
             Expr::Math2(f, a, b) => {
                 let ([a, b], d) = self.operands([&**a, &**b])?;
                 let op = match f {
@@ -257,6 +262,30 @@ impl Emitter {
             Expr::Const(_) | Expr::Arg(_) => unreachable!("leaves have slots of their own"),
         };
         self.code.push(op);
+        Ok(d)
+    }
+}
+
+/// The factors of a product.
+fn product(e: &Expr) -> Option<(&Expr, &Expr)> {
+    match e {
+        Expr::Math2(Math2::Mul, a, b) => Some((a, b)),
+        _ => None,
+    }
+}
+
+impl Emitter {
+    /// `a + b` or `a - b` where one side is a product, as one operation.
+    fn fused(&mut self, f: Math2, a: &Expr, b: &Expr) -> R<u8> {
+        let (x, y, c, op): (_, _, _, fn([u8; 3], u8) -> Op) = match (product(a), product(b)) {
+            (Some((x, y)), _) if f == Math2::Add => (x, y, b, Op::MulAdd),
+            (Some((x, y)), _) => (x, y, b, Op::MulSub),
+            (None, Some((x, y))) if f == Math2::Add => (x, y, a, Op::MulAdd),
+            (None, Some((x, y))) => (x, y, a, Op::SubMul),
+            (None, None) => unreachable!("the caller saw a product"),
+        };
+        let (slots, d) = self.operands([x, y, c])?;
+        self.code.push(op(slots, d));
         Ok(d)
     }
 }

@@ -175,23 +175,29 @@ fn bumpy_isosurface() -> crate::geometry::IsoData {
     }
 }
 
-/// Evaluations per second of x*x + y*y + z*z (ten operations) on one thread.
+/// Evaluations per second of x*x + y*y + z*z - (x*y + y*z)*0.5 (ten operations) on one
+/// thread.
 fn function_rate() -> f64 {
     use crate::function::{Expr, Math2, compile};
-    let sq = |i| {
-        Box::new(Expr::Math2(
-            Math2::Mul,
-            Box::new(Expr::Arg(i)),
-            Box::new(Expr::Arg(i)),
-        ))
-    };
-    let f = Expr::Math2(
+    let op = |f, a, b| Box::new(Expr::Math2(f, a, b));
+    let arg = |i| Box::new(Expr::Arg(i));
+    let sq = |i| op(Math2::Mul, arg(i), arg(i));
+    let squares = op(Math2::Add, op(Math2::Add, sq(0), sq(1)), sq(2));
+    let cross = op(
         Math2::Add,
-        Box::new(Expr::Math2(Math2::Add, sq(0), sq(1))),
-        sq(2),
+        op(Math2::Mul, arg(0), arg(1)),
+        op(Math2::Mul, arg(1), arg(2)),
+    );
+    let f = Expr::Math2(
+        Math2::Sub,
+        squares,
+        op(Math2::Mul, cross, Box::new(Expr::Const(0.5))),
     );
     let program = compile(&f, 3).expect("a small function");
-    let n = 4_000_000;
+    let n: u32 = std::env::var("PENUMBRA_FUNCTION_EVALS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(4_000_000);
     let start = Instant::now();
     let mut sum = 0.0;
     for i in 0..n {
@@ -496,11 +502,10 @@ fn side_by_side(side: usize, options: &BenchOptions, dir: &Path) -> Result<(f64,
     Ok((ours, pov))
 }
 
-/// Runs the benchmark and returns its report as text.
 /// The function line and a line per shape, beside one sphere.
-fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
+pub fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
     line(format!(
-        "function: {:.1} M evaluations/s of a ten-operation function (x*x + y*y + z*z), one thread",
+        "function: {:.1} M evaluations/s of a ten-operation function (x*x + y*y + z*z - (x*y + y*z)*0.5), one thread",
         function_rate() * 1e-6
     ));
     for name in [
