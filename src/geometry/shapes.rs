@@ -290,6 +290,9 @@ impl ShapeKind {
         match *self {
             ShapeKind::Mesh(i) => tables.meshes[i as usize].hit(ray, t_max),
             ShapeKind::HeightField(i) => tables.height_fields[i as usize].hit(ray, t_max),
+            ShapeKind::Box { min, max } => box_crossings(ray, min, max)?
+                .into_iter()
+                .find(|&(t, _)| t > 0.0 && t < t_max),
             _ => self.intersect(ray, t_max, tables).map(|t| (t, 0)),
         }
     }
@@ -301,6 +304,11 @@ impl ShapeKind {
         match *self {
             ShapeKind::Mesh(i) => tables.meshes[i as usize].each_hit(ray, f),
             ShapeKind::HeightField(i) => tables.height_fields[i as usize].each_hit(ray, f),
+            ShapeKind::Box { min, max } => {
+                for (t, face) in box_crossings(ray, min, max).into_iter().flatten() {
+                    f(t, face);
+                }
+            }
             _ => self.each_hit(ray, tables, |t| f(t, 0)),
         }
     }
@@ -315,6 +323,10 @@ impl ShapeKind {
             ShapeKind::HeightField(i) => {
                 let h = &tables.height_fields[i as usize];
                 (h.normal(part), h.shading_normal(part, p))
+            }
+            ShapeKind::Box { .. } if part != 0 => {
+                let n = box_face_normal(part);
+                (n, n)
             }
             _ => (self.normal(p, tables), self.shading_normal(p, tables)),
         }
@@ -385,14 +397,8 @@ impl ShapeKind {
             }
             ShapeKind::Box { min, max } => {
                 let mut r = Roots::default();
-                let inv = ray.direction.recip();
-                let t1 = (min - ray.origin) * inv;
-                let t2 = (max - ray.origin) * inv;
-                let t_near = t1.min(t2).max_element();
-                let t_far = t1.max(t2).min_element();
-                if t_near <= t_far {
-                    r.push(t_near);
-                    r.push(t_far);
+                for (t, _) in box_crossings(ray, min, max).into_iter().flatten() {
+                    r.push(t);
                 }
                 r
             }
@@ -923,6 +929,40 @@ fn polygon_contains(poly: &PolygonData, p: DVec2) -> bool {
     inside
 }
 
+/// Where a ray enters and leaves a box, each with the face it crosses (`box_face_normal`).
+/// The faces come from the slabs, not from the point, so a box flat in one axis (POV-Ray
+/// scenes use them as double-sided rectangles) is entered through the face the ray meets
+/// and left through the other, as POV-Ray does.
+fn box_crossings(ray: &Ray, min: DVec3, max: DVec3) -> Option<[(f64, u32); 2]> {
+    let inv = ray.direction.recip();
+    let t1 = (min - ray.origin) * inv;
+    let t2 = (max - ray.origin) * inv;
+    let near = t1.min(t2);
+    let far = t1.max(t2);
+    let (t_near, t_far) = (near.max_element(), far.min_element());
+    if t_near > t_far || t_near.is_nan() || t_far.is_nan() {
+        return None;
+    }
+    let axis_of = |v: DVec3, t: f64| (0..3).find(|&a| v[a] == t).unwrap_or(0);
+    let (a_in, a_out) = (axis_of(near, t_near), axis_of(far, t_far));
+    // Entering faces the ray; leaving, away from it.
+    let face =
+        |axis: usize, outward_positive: bool| (axis as u32) * 2 + 1 + u32::from(outward_positive);
+    Some([
+        (t_near, face(a_in, ray.direction[a_in] < 0.0)),
+        (t_far, face(a_out, ray.direction[a_out] > 0.0)),
+    ])
+}
+
+/// The outward normal of a box face numbered by `box_crossings` (1 + 2 axis, + 1 for the
+/// face on the positive side).
+fn box_face_normal(face: u32) -> DVec3 {
+    let axis = ((face - 1) / 2) as usize;
+    let mut n = DVec3::ZERO;
+    n[axis] = if (face - 1) % 2 == 1 { 1.0 } else { -1.0 };
+    n
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1046,6 +1086,33 @@ mod tests {
         let t = hit(&p, &Ray::new(DVec3::ZERO, DVec3::new(0.0, -1.0, 1.0)));
         assert_eq!(t, Some(1.0));
         assert!(p.inside(DVec3::new(0.0, -2.0, 0.0), &no_tables()));
+    }
+
+    #[test]
+    fn a_flat_box_is_entered_through_the_face_the_ray_meets() {
+        // Flat in z, as POV-Ray scenes write double-sided rectangles
+        // (textures/finishes/var_reflection.pov).
+        let b = ShapeKind::Box {
+            min: DVec3::new(-1.0, -1.0, 0.25),
+            max: DVec3::new(1.0, 1.0, 0.25),
+        };
+        let t = no_tables();
+        for (from, outward) in [(1.0, DVec3::Z), (-1.0, -DVec3::Z)] {
+            let ray = Ray::new(
+                DVec3::new(0.3, 0.2, 0.25 + from),
+                DVec3::new(0.1, 0.0, -from),
+            );
+            let (hit, part) = b.intersect_part(&ray, f64::INFINITY, &t).unwrap();
+            assert_eq!(hit, 1.0);
+            assert_eq!(b.normals(ray.at(hit), part, &t).0, outward);
+            let mut crossings = Vec::new();
+            b.each_hit_part(&ray, &t, |t, part| crossings.push((t, part)));
+            assert_eq!(crossings.len(), 2);
+            assert_eq!(b.normals(ray.at(1.0), crossings[1].1, &t).0, -outward);
+        }
+        // A ray in the box's plane misses it.
+        let along = Ray::new(DVec3::new(-5.0, 0.0, 0.25), DVec3::X);
+        assert_eq!(b.intersect_part(&along, f64::INFINITY, &t), None);
     }
 
     #[test]
