@@ -339,7 +339,10 @@ impl<'a> Integrator<'a> {
         counts: &mut RayCounts,
     ) -> DVec3 {
         let b = branches(s, top);
-        let (reflect_weight, transmit_weight) = (b.reflect.max_element(), b.transmit.max_element());
+        // By magnitude: POV-Ray takes `transmit -1` literally, subtracting what lies behind
+        // (textures/pigments/transmitfx.pov).
+        let reflect_weight = b.reflect.abs().max_element();
+        let transmit_weight = b.transmit.abs().max_element();
         if reflect_weight <= 0.0 && transmit_weight <= 0.0 {
             return colour;
         }
@@ -407,7 +410,7 @@ impl<'a> Integrator<'a> {
             skip: flags::NO_REFLECTION,
             interiors: s.path.interiors,
             wavelength: s.path.wavelength,
-            weight: s.path.weight * b.reflect.max_element() / chosen,
+            weight: s.path.weight * b.reflect.abs().max_element() / chosen,
             linear: e == 1.0,
             roulette: Purpose::RouletteReflection,
         };
@@ -444,7 +447,7 @@ impl<'a> Integrator<'a> {
             skip,
             interiors,
             wavelength,
-            weight: path.weight * b.transmit.max_element() / chosen,
+            weight: path.weight * b.transmit.abs().max_element() / chosen,
             linear: true,
             roulette: Purpose::RouletteTransmission,
         };
