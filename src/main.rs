@@ -398,7 +398,11 @@ fn povray(args: &[String]) -> Result<ExitCode, String> {
     if !job.quiet {
         print_warnings(&job.notes);
     }
-    render_job(&job, &JobSettings::default())
+    let settings = JobSettings {
+        allow_write: job.allow_write.clone(),
+        ..JobSettings::default()
+    };
+    render_job(&job, &settings)
 }
 
 fn run(cli: Cli) -> Result<ExitCode, String> {

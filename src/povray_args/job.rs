@@ -75,6 +75,7 @@ pub struct Job {
     pub declares: Vec<(String, f64)>,
     pub library_paths: Vec<PathBuf>,
     pub quiet: bool,
+    pub allow_write: Option<PathBuf>,
     pub notes: Vec<String>,
     /// penumbra's `--motion-blur N`: times per frame spread over its shutter (1: none).
     pub motion_blur: u32,
@@ -111,6 +112,7 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
         declares: settings.declares.clone(),
         library_paths: settings.library_paths.clone(),
         quiet: settings.quiet,
+        allow_write: settings.allow_write.clone(),
         notes: settings.notes.clone(),
         motion_blur: settings.motion_blur,
     })

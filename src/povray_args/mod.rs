@@ -107,6 +107,8 @@ pub struct PovSettings {
     pub spp: Option<u32>,
     pub seed: u64,
     pub quiet: bool,
+    /// `--allow-write DIR`.
+    pub allow_write: Option<PathBuf>,
     /// `--motion-blur N`.
     pub motion_blur: u32,
     /// One line per option accepted that does not apply.
@@ -135,6 +137,7 @@ impl Default for PovSettings {
             spp: None,
             seed: 0,
             quiet: false,
+            allow_write: None,
             motion_blur: 1,
             notes: Vec::new(),
         }
@@ -431,6 +434,7 @@ impl Reader<'_> {
             Setting::Spp => s.spp = Some(whole(value, 1..=1 << 20)?),
             Setting::Seed => s.seed = value.trim().parse().map_err(|_| not_number(value))?,
             Setting::Quiet => s.quiet = true,
+            Setting::AllowWrite => s.allow_write = Some(PathBuf::from(value.trim())),
             Setting::MotionBlur => s.motion_blur = whole(value, 1..=1024)?,
             _ => self.apply_more(option, switch_on, value)?,
         }

@@ -49,6 +49,7 @@ pub enum Setting {
     Seed,
     /// penumbra's own: `--quiet`.
     Quiet,
+    AllowWrite,
     /// penumbra's own: `--motion-blur N`.
     MotionBlur,
     /// Accepted with a one-line note: does not apply to penumbra.
@@ -771,6 +772,11 @@ pub const OPTIONS: &[PovOption] = &[
     ),
     own("seed", Seed, "`--seed N`: the sampler's seed"),
     own("quiet", Quiet, "no progress bar, no notes, no summary"),
+    own(
+        "allow-write",
+        AllowWrite,
+        "`--allow-write DIR`: the folder a scene's `#fopen ... write` may write into (nothing is written otherwise)",
+    ),
     own(
         "motion-blur",
         MotionBlur,

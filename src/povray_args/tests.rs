@@ -180,3 +180,11 @@ fn looks_like_povray_recognises_invocations() {
         assert!(!looks_like_povray(a), "{a}");
     }
 }
+
+#[test]
+fn penumbras_own_options_mix_with_switches() {
+    let s = read("scene.pov +SF1 +EF1 --spp 64 --seed 101 --quiet --allow-write out/").unwrap();
+    assert_eq!((s.spp, s.seed, s.quiet), (Some(64), 101, true));
+    assert_eq!(s.allow_write, Some(PathBuf::from("out/")));
+    assert_eq!(read("scene.pov").unwrap().allow_write, None);
+}

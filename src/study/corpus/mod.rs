@@ -107,8 +107,7 @@ pub struct Row {
     pub scene: String,
     pub parse: ParseStatus,
     pub test: TestKind,
-    /// POV-Ray reads this INI with the scene (its first frame); penumbra renders the scene
-    /// alone, at clock 0 (no INI of a parsing scene sets a clock or a declaration).
+    /// Both renderers read this INI with the scene, and render its first frame.
     pub ini: Option<PathBuf>,
     pub outcome: Outcome,
     /// penumbra's K renders, wall time summed.
@@ -328,26 +327,11 @@ fn render_replicates(
     let mut images = Vec::new();
     let mut seconds = 0.0;
     for k in 0..req.seeds {
-        let output = dir.path().join(format!("seed-{k}.exr"));
-        let args: Vec<OsString> = vec![
-            "render".into(),
-            path.into(),
-            "--output".into(),
-            output.clone().into(),
-            "--width".into(),
-            req.width.to_string().into(),
-            "--height".into(),
-            req.height.to_string().into(),
-            "--spp".into(),
-            req.spp.to_string().into(),
-            "--seed".into(),
-            (100 + u64::from(k)).to_string().into(),
-            "--quiet".into(),
-            "-L".into(),
-            scene_folder(path),
-            "--allow-write".into(),
-            dir.path().into(),
-        ];
+        // A folder per seed: with an INI that animates, the frame's number goes into the
+        // file's name.
+        let out_dir = dir.path().join(format!("seed-{k}"));
+        std::fs::create_dir_all(&out_dir).map_err(|e| format!("temporary folder: {e}"))?;
+        let args = replicate_args(req, path, row.ini.as_deref(), &out_dir, dir.path(), k);
         let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.render);
         seconds += run.seconds;
         match &run.ended {
@@ -362,11 +346,80 @@ fn render_replicates(
                 return Err(format!("penumbra failed ({status}): {}", run.message()));
             }
         }
+        let output = single_file(&out_dir)?;
         let image = read_exr(&output).map_err(|e| e.to_string())?.image;
         images.push(image);
     }
     row.penumbra_seconds = Some(seconds);
     Ok(images)
+}
+
+/// One replicate's command line. A scene with an INI is rendered the POV-Ray way, the INI
+/// before the scene (whose path then wins over the INI's relative Input_File_Name) and only
+/// its first frame, as POV-Ray renders the reference: the same clock, clock_delta and
+/// frame_number.
+fn replicate_args(
+    req: &CorpusRequest,
+    path: &Path,
+    ini: Option<&Path>,
+    out_dir: &Path,
+    scratch: &Path,
+    k: u32,
+) -> Vec<OsString> {
+    let mut args: Vec<OsString> = vec!["render".into()];
+    let own = [
+        "--spp".into(),
+        req.spp.to_string().into(),
+        "--seed".into(),
+        (100 + u64::from(k)).to_string().into(),
+        "--quiet".into(),
+        "--allow-write".into(),
+        scratch.into(),
+    ];
+    match ini {
+        Some(ini) => {
+            args.push(ini.into());
+            args.push(path.into());
+            args.extend(scan::first_frame_args(ini).into_iter().map(OsString::from));
+            let mut output = OsString::from("+O");
+            output.push(out_dir.join("image.exr"));
+            let mut library = OsString::from("+L");
+            library.push(scene_folder(path));
+            args.extend([
+                format!("+W{}", req.width).into(),
+                format!("+H{}", req.height).into(),
+                "+FE".into(),
+                output,
+                library,
+            ]);
+        }
+        None => args.extend([
+            path.into(),
+            "--output".into(),
+            out_dir.join("image.exr").into(),
+            "--width".into(),
+            req.width.to_string().into(),
+            "--height".into(),
+            req.height.to_string().into(),
+            "-L".into(),
+            scene_folder(path),
+        ]),
+    }
+    args.extend(own);
+    args
+}
+
+/// The one image a replicate wrote into its folder.
+fn single_file(dir: &Path) -> Result<PathBuf, String> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| e.to_string())?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "exr"))
+        .collect();
+    match files.len() {
+        1 => Ok(files.remove(0)),
+        n => Err(format!("penumbra wrote {n} images where one was expected")),
+    }
 }
 
 /// The scene's reference from the cache, or rendered by a `penumbra reference` child and

@@ -221,7 +221,7 @@ fn method(context: &Context) -> String {
 penumbra renders each scene {seeds} times (seeds 100..) at {w}x{h}, {spp} samples per pixel;
 POV-Ray renders it {k} and {k2} times larger without anti-aliasing, averaged over k x k
 blocks (`penumbra reference`). Animated scenes are compared at clock 0; a scene whose folder
-holds its INI file is rendered by POV-Ray with it (its first frame only).
+holds its INI file is rendered by both with it (its first frame only).
 
 - **pixel test** (docs: shared testing-statistics.md): sqrt(B) on 4x4 block means <= 0.005,
   no failing 8x8 tile (z* = 4.78, delta = 0.004 + 0.02 |r|), every value finite.

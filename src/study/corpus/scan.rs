@@ -267,19 +267,24 @@ pub fn ini_value(text: &str, key: &str) -> Option<String> {
         .map(|(_, v)| v.trim().trim_matches('"').to_string())
 }
 
-/// POV-Ray's options for a scene with an INI: the INI itself and, when it animates, only
-/// its first frame (`+SF +EF`, so the clock stays the animation's initial clock).
+/// POV-Ray's options for a scene with an INI: the INI itself and its first frame.
 pub fn ini_args(ini: &Path) -> Vec<String> {
-    let text = read_lossy(ini).unwrap_or_default();
     let mut args = vec![ini.display().to_string()];
-    if ini_value(&text, "Final_Frame").is_some() {
-        let first = ini_value(&text, "Initial_Frame")
-            .and_then(|v| v.parse::<i64>().ok())
-            .unwrap_or(1);
-        args.push(format!("+SF{first}"));
-        args.push(format!("+EF{first}"));
-    }
+    args.extend(first_frame_args(ini));
     args
+}
+
+/// When the INI animates, the switches that render only its first frame (`+SF +EF`, so the
+/// clock stays the animation's initial clock).
+pub fn first_frame_args(ini: &Path) -> Vec<String> {
+    let text = read_lossy(ini).unwrap_or_default();
+    if ini_value(&text, "Final_Frame").is_none() {
+        return Vec::new();
+    }
+    let first = ini_value(&text, "Initial_Frame")
+        .and_then(|v| v.parse::<i64>().ok())
+        .unwrap_or(1);
+    vec![format!("+SF{first}"), format!("+EF{first}")]
 }
 
 /// 64-bit FNV-1a, stable across builds and platforms (std's hasher is not promised to be).
