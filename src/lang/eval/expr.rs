@@ -158,12 +158,16 @@ impl Evaluator<'_> {
                 },
                 _ => (self.to_float(&a, span)?, self.to_float(&b, sb)?),
             };
+            // Equality has POV-Ray's tolerance, and so do `<=` and `>=` (measured: 0.5 +
+            // 1e-12 <= 0.5 holds, 0.5 + 2e-10 <= 0.5 does not; `<` and `>` are strict), so
+            // `#while (X <= 0.5)` stepping X by 0.01 from -0.5 runs 101 times.
+            let equal = (x - y).abs() <= EPSILON;
             let r = match p {
                 Punct::Lt => x < y,
-                Punct::Le => x <= y,
-                Punct::Eq => (x - y).abs() <= EPSILON,
-                Punct::Ne => (x - y).abs() > EPSILON,
-                Punct::Ge => x >= y,
+                Punct::Le => x < y || equal,
+                Punct::Eq => equal,
+                Punct::Ne => !equal,
+                Punct::Ge => x > y || equal,
                 _ => x > y,
             };
             a = Value::Float(f64::from(u8::from(r)));
