@@ -168,7 +168,8 @@ struct CorpusArgs {
     /// Library includes (for the cache key and the noise scan).
     #[arg(long, default_value = "/usr/share/povray-3.7/include")]
     include_dir: Vec<PathBuf>,
-    /// Measure only scenes whose path (relative to --scenes) matches this glob.
+    /// Measure only scenes whose path (relative to --scenes) matches this glob (or one of
+    /// several, comma-separated).
     #[arg(long)]
     only: Option<String>,
     #[arg(long, default_value_t = 4)]

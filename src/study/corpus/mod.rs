@@ -37,7 +37,8 @@ pub struct CorpusRequest {
     /// Library include folders, searched for the includes that enter the cache key and the
     /// noise scan (/usr/share/povray-3.7/include).
     pub include_dirs: Vec<PathBuf>,
-    /// Measure only scenes whose relative path matches (every scene is still parsed).
+    /// Measure only scenes whose relative path matches one of these comma-separated globs
+    /// (every scene is still parsed).
     pub only: Option<String>,
     pub seeds: u32,
     pub spp: u32,
@@ -172,9 +173,11 @@ pub fn run(req: &CorpusRequest, log: &dyn Log) -> Result<Vec<Row>, StudyError> {
     let mut order: Vec<usize> = (0..rows.len())
         .filter(|&i| rows[i].parse == ParseStatus::Parsed)
         .filter(|&i| {
-            req.only
-                .as_deref()
-                .is_none_or(|g| scan::glob_match(g, &rows[i].scene))
+            req.only.as_deref().is_none_or(|globs| {
+                globs
+                    .split(',')
+                    .any(|g| scan::glob_match(g.trim(), &rows[i].scene))
+            })
         })
         .collect();
     if req.cheap_first {
