@@ -63,8 +63,11 @@ pub fn warp_chain(warps: &[Warp], turbulence: Option<&Turbulence>, mut p: DVec3)
 /// warps), with frequency, phase and wave applied. List patterns give index / (n - 1).
 pub fn pattern_value(pattern: &Pattern, p: DVec3) -> f64 {
     let q = warp_point(pattern, p);
-    if let Some(n) = pattern.kind.list_size() {
-        return list_index(&pattern.kind, q) as f64 / (n - 1) as f64;
+    // A list pattern's value is the entry's index, unscaled: hexagon gives 0, 1 and 2
+    // (measured with POV-Ray's `function { pattern { hexagon } }`), so its cells' edges
+    // tilt a normal twice as far as 0, 0.5, 1 would (textures/patterns/hexagon.pov).
+    if pattern.kind.list_size().is_some() {
+        return list_index(&pattern.kind, q) as f64;
     }
     let raw = raw_value(pattern, q);
     apply_wave(pattern, raw)

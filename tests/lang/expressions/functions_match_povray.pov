@@ -22,9 +22,14 @@
 #debug concat(str(f_sphere(1, 2, 2, 1), 0, 6), " ", str(f_torus(3, 1, 0, 2, 0.5), 0, 6), " ", str(f_rounded_box(2, 2, 2, 0.1, 1, 1, 1), 0, 6), " ", str(f_superellipsoid(0.5, 0.5, 0.5, 0.5, 1), 0, 6), "\n")
 #declare GP = function { pattern { gradient x } }
 #debug concat(str(GP(0.5, 0, 0), 0, 6), " ", str(GP(1, 0, 0), 0, 6), " ", str(GP(1.5, 0, 0), 0, 6), " ", str(f_checker(1.3, 0.4, 0.5), 0, 6), "\n")
+// A list pattern's value is its entry's index: hexagon 0, 2, 1, checker 0, 1.
+#declare HX = function { pattern { hexagon } }
+#declare CK = function { pattern { checker } }
+#debug concat(str(HX(0, 0, 0), 0, 6), " ", str(HX(1.5, 0, 0.3), 0, 6), " ", str(HX(0, 0, 1.7), 0, 6), " ", str(CK(1.5, 0.5, 0.5), 0, 6), "\n")
 // debug: 10.000000 1.000000 2.000000 3.000000
 // debug: 8.000000 0.250000 1.250000 2.000000
 // debug: 14.000000 24.000000 10.000000 1011.000000
 // debug: -211.000000 21.000000 6.000000
 // debug: 2.000000 0.914214 1.805255 0.223113
 // debug: 0.500000 1.000000 0.500000 1.000000
+// debug: 0.000000 2.000000 1.000000 1.000000
