@@ -233,50 +233,50 @@ impl HeightFieldData {
         self.to_object_normal(if n.y < 0.0 { -n } else { n })
     }
 
-    /// With `smooth`, the grid points' normals interpolated across the triangle.
+    /// With `smooth`, the grid points' normals interpolated bilinearly across the cell, as
+    /// POV-Ray does (measured inside the cells of a 5 x 5 function field: worst slope
+    /// difference 0.015, against 0.07 for interpolation over the triangle).
     pub fn shading_normal(&self, part: u32, p: DVec3) -> DVec3 {
         if !self.smooth {
             return self.normal(part);
         }
-        let (cx, cz, k) = self.decode(part);
+        let (cx, cz, _) = self.decode(part);
         let (sx, sz) = self.cells();
         let (fx, fz) = (p.x * sx as f64 - cx as f64, p.z * sz as f64 - cz as f64);
         let n = |ix, iz| self.point_normal(ix, iz);
-        let s = if std::env::var_os("HF_BILINEAR").is_some() {
-            let _ = k;
-            n(cx, cz) * ((1.0 - fx) * (1.0 - fz))
-                + n(cx + 1, cz) * (fx * (1.0 - fz))
-                + n(cx, cz + 1) * ((1.0 - fx) * fz)
-                + n(cx + 1, cz + 1) * (fx * fz)
-        } else if k == 0 {
-            n(cx, cz) * (1.0 - fx - fz) + n(cx + 1, cz) * fx + n(cx, cz + 1) * fz
-        } else {
-            n(cx + 1, cz + 1) * (fx + fz - 1.0)
-                + n(cx, cz + 1) * (1.0 - fx)
-                + n(cx + 1, cz) * (1.0 - fz)
-        };
+        let s = n(cx, cz) * ((1.0 - fx) * (1.0 - fz))
+            + n(cx + 1, cz) * (fx * (1.0 - fz))
+            + n(cx, cz + 1) * ((1.0 - fx) * fz)
+            + n(cx + 1, cz + 1) * (fx * fz);
         self.to_object_normal(s)
     }
 
-    /// A grid point's normal in grid units, from the slopes to its neighbours (one-sided on
-    /// the edges), quantised as POV-Ray stores it: the unit normal of the field in its
-    /// 16-bit height units (heights 0 to 65535 over one cell per grid step), each component
-    /// truncated to a multiple of 1/32767. On steep fields that leaves few normals (slopes
-    /// of 1, 2/3, 1/2, ... the cell's width over its height), which POV-Ray shows: measured
-    /// at the grid points of a 5 x 5 function field (scripts/hf_smooth_normals.py), where
-    /// this rule gives POV-Ray's slopes and plain central differences are up to 30% off.
+    /// A grid point's normal in grid units, as POV-Ray computes and stores it: in its
+    /// 16-bit height units (heights 0 to 65535, one unit per grid step), the mean of the
+    /// unit normals of the quadrants around the point (fewer on the edges), each component
+    /// then truncated to a multiple of 1/32767. On steep fields that leaves few normals
+    /// (slopes of 1, 2/3, 1/2, ... of the cell's width over its height), which POV-Ray
+    /// shows. Measured at the grid points of 5 x 5 and 33 x 25 function fields
+    /// (scripts/hf_smooth_normals.py): worst slope difference 0.001, where plain central
+    /// differences are up to 0.29 off; advanced/crater.pov's 16-bit PNG: sqrt(B) 0.0071 ->
+    /// 0.0013.
     fn point_normal(&self, ix: usize, iz: usize) -> DVec3 {
-        let slope = |a: f64, b: f64, span: usize| (b - a) / span as f64;
-        let (x0, x1) = (ix.saturating_sub(1), (ix + 1).min(self.nx - 1));
-        let (z0, z1) = (iz.saturating_sub(1), (iz + 1).min(self.nz - 1));
-        let dx = slope(self.h(x0, iz), self.h(x1, iz), x1 - x0);
-        let dz = slope(self.h(ix, z0), self.h(ix, z1), z1 - z0);
-        let stored = DVec3::new(-dx * HEIGHT_UNITS, 1.0, -dz * HEIGHT_UNITS).normalize();
-        let q = if std::env::var_os("HF_NOQ").is_some() {
-            stored * 1e12
-        } else {
-            (stored * NORMAL_UNITS).trunc()
+        let h0 = self.h(ix, iz) * HEIGHT_UNITS;
+        let step = |jx: usize, jz: usize, x: f64, z: f64| {
+            DVec3::new(x, self.h(jx, jz) * HEIGHT_UNITS - h0, z)
         };
+        let east = (ix + 1 < self.nx).then(|| step(ix + 1, iz, 1.0, 0.0));
+        let west = (ix > 0).then(|| step(ix - 1, iz, -1.0, 0.0));
+        let north = (iz + 1 < self.nz).then(|| step(ix, iz + 1, 0.0, 1.0));
+        let south = (iz > 0).then(|| step(ix, iz - 1, 0.0, -1.0));
+        let mut sum = DVec3::ZERO;
+        for (a, b) in [(east, north), (north, west), (west, south), (south, east)] {
+            if let (Some(a), Some(b)) = (a, b) {
+                let c = b.cross(a);
+                sum += if c.y < 0.0 { -c } else { c }.normalize();
+            }
+        }
+        let q = (sum.normalize_or(DVec3::Y) * NORMAL_UNITS).trunc();
         // Back from height units to grid units (y scales as the height does).
         DVec3::new(q.x, q.y * HEIGHT_UNITS, q.z).normalize_or(DVec3::Y)
     }
