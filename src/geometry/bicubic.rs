@@ -6,42 +6,71 @@
 //! cuts along a row of control points, where u (as `uv_mapping` reads it) runs, and
 //! `u_steps` across the rows (measured on a patch curved one way only).
 
-use glam::{DVec2, DVec3};
+use glam::{DAffine3, DVec2, DVec3};
 
 use super::mesh::MeshData;
 
 /// At most this many halvings per direction (POV-Ray's own limit is about as deep).
 pub const MAX_STEPS: u32 = 10;
 
+/// How a patch is cut: at most `along` halvings along the rows and `across` across them
+/// (POV-Ray's v_steps and u_steps), stopping early where a piece is flat within `flatness`
+/// once its control points are moved by `to_scene`.
+#[derive(Clone, Copy, Debug)]
+pub struct Subdivision {
+    pub along: u32,
+    pub across: u32,
+    pub flatness: f64,
+    pub to_scene: DAffine3,
+}
+
+/// A piece of the patch: its parameter ranges and its own control net.
+#[derive(Clone, Copy)]
+struct Piece {
+    u: (f64, f64),
+    v: (f64, f64),
+    net: [DVec3; 16],
+}
+
 /// The patch as a mesh: `points` row by row (index 4 v + u), `uv` the (u, v) of the
-/// corners (0,0), (1,0), (1,1), (0,1) for `uv_mapping`; `along` and `across` the halvings
-/// along and across the rows (POV-Ray's v_steps and u_steps).
-pub fn tessellate(points: &[DVec3; 16], along: u32, across: u32, uv: [DVec2; 4]) -> MeshData {
-    let nu = 1usize << along.min(MAX_STEPS);
-    let nv = 1usize << across.min(MAX_STEPS);
+/// corners (0,0), (1,0), (1,1), (0,1) for `uv_mapping`. Each piece shows as two triangles
+/// through its corners on the surface; where neighbouring pieces stop at different depths
+/// their edges need not meet, as in POV-Ray.
+pub fn tessellate(points: &[DVec3; 16], cut: Subdivision, uv: [DVec2; 4]) -> MeshData {
+    let mut leaves = Vec::new();
+    let whole = Piece {
+        u: (0.0, 1.0),
+        v: (0.0, 1.0),
+        net: *points,
+    };
+    let cut = Subdivision {
+        along: cut.along.min(MAX_STEPS),
+        across: cut.across.min(MAX_STEPS),
+        ..cut
+    };
+    subdivide(whole, cut.along, cut.across, &cut, &mut leaves);
     let mut m = MeshData::default();
-    for j in 0..=nv {
-        for i in 0..=nu {
-            let (u, v) = (i as f64 / nu as f64, j as f64 / nv as f64);
+    for leaf in &leaves {
+        let base = m.vertices.len() as u32;
+        for (u, v) in [
+            (leaf.u.0, leaf.v.0),
+            (leaf.u.1, leaf.v.0),
+            (leaf.u.1, leaf.v.1),
+            (leaf.u.0, leaf.v.1),
+        ] {
             let (p, du, dv) = evaluate(points, u, v);
             m.vertices.push(p.as_vec3().to_array());
-            let n = du.cross(dv);
             // A degenerate corner (coincident control points) has no normal of its own.
-            let n = n.try_normalize().unwrap_or(DVec3::ZERO);
+            let n = du.cross(dv).try_normalize().unwrap_or(DVec3::ZERO);
             m.normals.push(n.as_vec3().to_array());
             let bottom = uv[0].lerp(uv[1], u);
             let top = uv[3].lerp(uv[2], u);
             m.uvs.push(bottom.lerp(top, v).as_vec2().to_array());
         }
-    }
-    let at = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
-    for j in 0..nv {
-        for i in 0..nu {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            for f in [[a, b, c], [a, c, d]] {
-                if !degenerate(&m, f) {
-                    m.faces.push(f);
-                }
+        let (a, b, c, d) = (base, base + 1, base + 2, base + 3);
+        for f in [[a, b, c], [a, c, d]] {
+            if !degenerate(&m, f) {
+                m.faces.push(f);
             }
         }
     }
@@ -53,6 +82,104 @@ pub fn tessellate(points: &[DVec3; 16], along: u32, across: u32, uv: [DVec2; 4])
     }
     m.face_uvs = m.faces.clone();
     m
+}
+
+/// Halves a piece in each direction that has halvings left, until it is flat enough.
+fn subdivide(piece: Piece, along: u32, across: u32, cut: &Subdivision, out: &mut Vec<Piece>) {
+    let done = along == 0 && across == 0;
+    if done || (cut.flatness > 0.0 && flat_enough(&piece.net, cut)) {
+        out.push(piece);
+        return;
+    }
+    let halves = if along > 0 {
+        split_u(&piece).to_vec()
+    } else {
+        vec![piece]
+    };
+    let along = along.saturating_sub(1);
+    for half in halves {
+        if across > 0 {
+            for quarter in split_v(&half) {
+                subdivide(quarter, along, across - 1, cut, out);
+            }
+        } else {
+            subdivide(half, along, 0, cut, out);
+        }
+    }
+}
+
+/// Every control point, in the scene's units, within `flatness` of both planes through
+/// three of the corners.
+fn flat_enough(net: &[DVec3; 16], cut: &Subdivision) -> bool {
+    let net = net.map(|p| cut.to_scene.transform_point3(p));
+    let plane_holds = |a: DVec3, b: DVec3, c: DVec3| {
+        let Some(n) = (b - a).cross(c - a).try_normalize() else {
+            return true;
+        };
+        net.iter().all(|p| (*p - a).dot(n).abs() <= cut.flatness)
+    };
+    plane_holds(net[0], net[3], net[15]) && plane_holds(net[0], net[15], net[12])
+}
+
+/// De Casteljau at the middle of four control points: the two halves' points.
+fn halve(p: [DVec3; 4]) -> ([DVec3; 4], [DVec3; 4]) {
+    let m = |a: DVec3, b: DVec3| (a + b) * 0.5;
+    let (p01, p12, p23) = (m(p[0], p[1]), m(p[1], p[2]), m(p[2], p[3]));
+    let (p012, p123) = (m(p01, p12), m(p12, p23));
+    let mid = m(p012, p123);
+    ([p[0], p01, p012, mid], [mid, p123, p23, p[3]])
+}
+
+/// The piece cut at the middle of u (along the rows).
+fn split_u(piece: &Piece) -> [Piece; 2] {
+    let (mut lo, mut hi) = (piece.net, piece.net);
+    for j in 0..4 {
+        let row = [0, 1, 2, 3].map(|i| piece.net[4 * j + i]);
+        let (a, b) = halve(row);
+        for i in 0..4 {
+            lo[4 * j + i] = a[i];
+            hi[4 * j + i] = b[i];
+        }
+    }
+    let mid = 0.5 * (piece.u.0 + piece.u.1);
+    [
+        Piece {
+            u: (piece.u.0, mid),
+            net: lo,
+            ..*piece
+        },
+        Piece {
+            u: (mid, piece.u.1),
+            net: hi,
+            ..*piece
+        },
+    ]
+}
+
+/// The piece cut at the middle of v (across the rows).
+fn split_v(piece: &Piece) -> [Piece; 2] {
+    let (mut lo, mut hi) = (piece.net, piece.net);
+    for i in 0..4 {
+        let column = [0, 1, 2, 3].map(|j| piece.net[4 * j + i]);
+        let (a, b) = halve(column);
+        for j in 0..4 {
+            lo[4 * j + i] = a[j];
+            hi[4 * j + i] = b[j];
+        }
+    }
+    let mid = 0.5 * (piece.v.0 + piece.v.1);
+    [
+        Piece {
+            v: (piece.v.0, mid),
+            net: lo,
+            ..*piece
+        },
+        Piece {
+            v: (mid, piece.v.1),
+            net: hi,
+            ..*piece
+        },
+    ]
 }
 
 fn degenerate(m: &MeshData, f: [u32; 3]) -> bool {
@@ -108,7 +235,16 @@ mod tests {
             DVec2::new(1.0, 1.0),
             DVec2::new(0.0, 1.0),
         ];
-        let mut m = tessellate(&pts, 2, 1, uv);
+        let mut m = tessellate(
+            &pts,
+            Subdivision {
+                along: 2,
+                across: 1,
+                flatness: 0.0,
+                to_scene: DAffine3::IDENTITY,
+            },
+            uv,
+        );
         assert_eq!(m.faces.len(), 4 * 2 * 2);
         m.finish();
         let ray = crate::geometry::Ray::new(DVec3::new(0.3, 1.0, 0.6), -DVec3::Y);
@@ -117,5 +253,35 @@ mod tests {
         let uv = m.uv(face, ray.at(t)).unwrap();
         assert!((uv - DVec2::new(0.3, 0.6)).length() < 1e-6, "{uv}");
         assert!(m.shading_normal(face, ray.at(t)).y.abs() > 0.99);
+    }
+
+    #[test]
+    fn flatness_stops_the_cutting_in_the_scenes_units() {
+        // A dome 1 high over a 3 x 3 square: cut until every piece's control points lie
+        // within `flatness` of its corners' planes, measured after the object's transform.
+        let mut pts = [DVec3::ZERO; 16];
+        for j in 0..4 {
+            for i in 0..4 {
+                let inner = (1..3).contains(&i) && (1..3).contains(&j);
+                pts[4 * j + i] = DVec3::new(i as f64, if inner { 1.0 } else { 0.0 }, j as f64);
+            }
+        }
+        let uv = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+        let faces = |flatness: f64, scale: f64| {
+            let cut = Subdivision {
+                along: 6,
+                across: 6,
+                flatness,
+                to_scene: DAffine3::from_scale(DVec3::splat(scale)),
+            };
+            tessellate(&pts, cut, uv).faces.len()
+        };
+        // Flat enough as it is: one piece, two triangles.
+        assert_eq!(faces(2.0, 1.0), 2);
+        // Not flat: cut, and more finely where the scene sees it 10 times larger.
+        let (near, far) = (faces(0.05, 1.0), faces(0.05, 10.0));
+        assert!(near > 2 && far > near, "{near} {far}");
+        // Never past the steps: 2^6 x 2^6 pieces at most.
+        assert!(faces(1e-9, 1.0) == 2 * 64 * 64);
     }
 }

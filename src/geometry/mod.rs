@@ -20,7 +20,10 @@ mod transform;
 mod world;
 
 pub use aabb::Aabb;
-pub use bicubic::{MAX_STEPS as BICUBIC_MAX_STEPS, tessellate as tessellate_bicubic};
+pub use bicubic::{
+    MAX_STEPS as BICUBIC_MAX_STEPS, Subdivision as BicubicSubdivision,
+    tessellate as tessellate_bicubic,
+};
 pub use blob::{BlobData, BlobPart, OWN_TEXTURE};
 pub use bvh::Bvh;
 pub use height_field::HeightFieldData;

@@ -6,13 +6,13 @@ use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
 use crate::geometry::{
-    BlobData, BlobPart, CsgOp, HeightFieldData, Item, JuliaData, LatheData, MeshData, NO_INDEX,
-    OWN_TEXTURE, PolyData, PolygonData, PrismData, ShapeKind, SorData, Superellipsoid, Transform,
-    TriangleData, World, WorldBuilder, flags, tessellate_bicubic,
+    BicubicSubdivision, BlobData, BlobPart, CsgOp, HeightFieldData, Item, JuliaData, LatheData,
+    MeshData, NO_INDEX, OWN_TEXTURE, PolyData, PolygonData, PrismData, ShapeKind, SorData,
+    Superellipsoid, Transform, TriangleData, World, WorldBuilder, flags, tessellate_bicubic,
 };
 use crate::scene::{
-    Blob, BlobComponentKind, Camera, Colour, GlobalSettings, Interior, Mesh, MeshFace, Object,
-    ObjectFlags, Scene, Shape, SkySphere, Texture,
+    BicubicPatch, Blob, BlobComponentKind, Camera, Colour, GlobalSettings, Interior, Mesh,
+    MeshFace, Object, ObjectFlags, Scene, Shape, SkySphere, Texture,
 };
 
 use super::dimensions::{DimensionLayout, OptionalDecisions};
@@ -302,6 +302,7 @@ impl Builder {
     fn primitive(&mut self, shape: &Shape, object: &Object, looks: Looks<'_>) -> Option<Item> {
         let (kind, local) = match shape {
             Shape::Blob(blob) => (self.blob(blob, looks)?, None),
+            Shape::BicubicPatch(patch) => (self.bicubic(patch, &object.transform)?, None),
             _ => self.shape_kind(shape)?,
         };
         let transform = match local {
@@ -363,6 +364,30 @@ impl Builder {
             .collect();
         self.world.tables.blobs.push(blob_data(blob, &materials)?);
         Some(ShapeKind::Blob((self.world.tables.blobs.len() - 1) as u32))
+    }
+
+    /// A bicubic patch as a mesh. POV-Ray moves the control points before it cuts the
+    /// patch, so `flatness` is a distance in the scene's units: the test sees the net
+    /// through the object's transform (objects/bezier.pov, scaled by 2: flatness 0.1 in the
+    /// patch's own units is off by sqrt(B) 0.0084, in the scene's it matches POV-Ray).
+    fn bicubic(&mut self, patch: &BicubicPatch, transform: &Transform) -> Option<ShapeKind> {
+        let mut data = tessellate_bicubic(
+            &patch.points,
+            BicubicSubdivision {
+                along: patch.v_steps,
+                across: patch.u_steps,
+                flatness: patch.flatness,
+                to_scene: transform.forward,
+            },
+            patch.uv,
+        );
+        if data.faces.is_empty() {
+            return None;
+        }
+        data.finish();
+        let tables = &mut self.world.tables;
+        tables.meshes.push(data);
+        Some(ShapeKind::Mesh((tables.meshes.len() - 1) as u32))
     }
 
     /// `item` clipped by the object's `clipped_by` shapes, which keep no flags of their own.
@@ -527,10 +552,11 @@ impl Builder {
             Shape::Superellipsoid { .. } | Shape::Isosurface(_) => {
                 return self.field_shape(shape);
             }
-            Shape::HeightField(_) | Shape::BicubicPatch(_) => (self.grid_shape(shape)?, None),
+            Shape::HeightField(_) => (self.grid_shape(shape)?, None),
             Shape::Triangle { .. }
             | Shape::SmoothTriangle { .. }
             | Shape::Blob(_)
+            | Shape::BicubicPatch(_)
             | Shape::Mesh(_)
             | Shape::Union(_)
             | Shape::Merge(_)
@@ -558,8 +584,8 @@ impl Builder {
         })
     }
 
-    /// The table entry of a height field or a bicubic patch (`None` for other shapes, or
-    /// for data that makes no surface).
+    /// The table entry of a height field (`None` for other shapes, or for data that makes
+    /// no surface).
     fn grid_shape(&mut self, shape: &Shape) -> Option<ShapeKind> {
         let tables = &mut self.world.tables;
         Some(match shape {
@@ -573,16 +599,6 @@ impl Builder {
                 )?;
                 tables.height_fields.push(data);
                 ShapeKind::HeightField((tables.height_fields.len() - 1) as u32)
-            }
-            Shape::BicubicPatch(patch) => {
-                let mut data =
-                    tessellate_bicubic(&patch.points, patch.v_steps, patch.u_steps, patch.uv);
-                if data.faces.is_empty() {
-                    return None;
-                }
-                data.finish();
-                tables.meshes.push(data);
-                ShapeKind::Mesh((tables.meshes.len() - 1) as u32)
             }
             _ => return None,
         })
