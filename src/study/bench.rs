@@ -129,6 +129,10 @@ fn shape_world(name: &str) -> World {
             b.tables.isosurfaces.push(bumpy_isosurface());
             ShapeKind::Isosurface(0)
         }
+        "blob" => {
+            b.tables.blobs.push(three_blob());
+            ShapeKind::Blob(0)
+        }
         other => algebraic_shape(other, &mut b.tables).unwrap_or(ShapeKind::Sphere {
             center: DVec3::ZERO,
             radius: 1.0,
@@ -139,6 +143,26 @@ fn shape_world(name: &str) -> World {
     let item = b.primitive(shape, &tilt, 0, 0);
     b.add_top(item);
     b.build()
+}
+
+/// Three spheres of radius 1 melting together (objects/blob.pov's blob, threshold 0.6).
+fn three_blob() -> crate::geometry::BlobData {
+    use crate::geometry::{BlobData, BlobPart, OWN_TEXTURE};
+    use glam::DAffine3;
+    let part = |x: f64, y: f64| BlobPart {
+        to_local: DAffine3::from_translation(-DVec3::new(x, y, 0.0)),
+        strength: 1.0,
+        length: 0.0,
+        material: OWN_TEXTURE,
+    };
+    BlobData::new(
+        0.6,
+        vec![
+            part(0.75, 0.0),
+            part(-0.375, 0.649_52),
+            part(-0.375, -0.649_52),
+        ],
+    )
 }
 
 /// A unit sphere's distance with bumps of 0.1 (max_gradient 2), in a sphere of 1.2: a
@@ -508,18 +532,25 @@ pub fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
         "function: {:.1} M evaluations/s of a ten-operation function (x*x + y*y + z*z - (x*y + y*z)*0.5), one thread",
         function_rate() * 1e-6
     ));
+    line(
+        "one shape, rays/s (camera, shadow) and the camera rays' hit fraction; cubic spline \
+         prism and lathe; isosurface: bumpy sphere, max_gradient 2; blob: three spheres; \
+         sextic poly; quaternion julia"
+            .to_string(),
+    );
     for name in [
         "sphere",
         "prism",
         "sor",
         "lathe",
         "isosurface",
+        "blob",
         "poly",
         "julia",
     ] {
         let figures = trace(&shape_world(name), rays);
         line(format!(
-            "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (one shape; cubic spline prism and lathe; isosurface: bumpy sphere, max_gradient 2; sextic poly; quaternion julia)",
+            "{name:>10} {:>12.0} {:>12.0} {:>8.1}%",
             figures.camera_rate,
             figures.shadow_rate,
             100.0 * figures.hit_fraction,
