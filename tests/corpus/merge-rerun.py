@@ -6,8 +6,9 @@ scenes it touches without a whole sweep (about 90 minutes):
     tests/corpus/merge-rerun.py /tmp/rerun/corpus.md docs/corpus.md
 
 Every scene the partial run measured replaces its row and its gallery entry (and image) in
-the full report; the counts are recomputed from the rows with the rules of
-src/study/corpus/report.rs; the header says which scenes were re-measured.
+the full report; a failure whose scene has since been given a reason in
+tests/corpus/known-differences.txt takes it; the counts are recomputed from the rows with the
+rules of src/study/corpus/report.rs; the header says which scenes were re-measured.
 """
 import os, re, shutil, sys
 
@@ -59,6 +60,28 @@ def counts(rows):
              ('notyet', 'parse, not measured yet')]
     return '| | scenes |\n| --- | ---: |\n' + ''.join(f'| {n} | {c[k]} |\n' for k, n in names)
 
+def known_reasons():
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'known-differences.txt')
+    reasons = {}
+    for line in open(path):
+        if line.strip() and not line.startswith('#') and '|' in line:
+            scene, reason = line.split('|', 1)
+            reasons[scene.strip()] = reason.strip()
+    return reasons
+
+def explain(row, sections, reasons):
+    """A failure without a reason takes the one written down since."""
+    c = cells(row)
+    if c[3] != '**FAIL**' or c[0] not in reasons:
+        return row
+    reason = reasons[c[0]].replace('|', '\\|')
+    c[3] = 'fail, reason known'
+    c[4] = reason + '; ' + c[4]
+    if c[0] in sections:
+        title, rest = sections[c[0]].split('\n', 1)
+        sections[c[0]] = title + '\n\nReason: ' + reason + '\n' + rest
+    return '| ' + ' | '.join(c) + ' |'
+
 def main():
     partial_path, full_path = sys.argv[1], sys.argv[2]
     p_head, _, p_rows, _, p_sections = split(open(partial_path).read())
@@ -76,6 +99,8 @@ def main():
             sections[scene] = p_sections[scene]
             os.makedirs(gallery_dir, exist_ok=True)
             shutil.copy(os.path.join(partial_gallery, flat), os.path.join(gallery_dir, flat))
+    reasons = known_reasons()
+    rows = [explain(r, sections, reasons) for r in rows]
     table_start = head.index('| | scenes |')
     table_end = head.index('\n\n', table_start)
     head = head[:table_start] + counts(rows).rstrip('\n') + head[table_end:]

@@ -164,7 +164,9 @@ impl Evaluator<'_> {
         }
         self.next()?;
         let saved = std::mem::replace(&mut self.in_vector, false);
+        self.grouping += 1;
         let r = self.float();
+        self.grouping -= 1;
         self.in_vector = saved;
         let v = r?;
         self.expect(Punct::RParen, "to close the condition")?;

@@ -142,8 +142,10 @@ impl Evaluator<'_> {
                 p,
                 Punct::Lt | Punct::Le | Punct::Eq | Punct::Ne | Punct::Ge | Punct::Gt
             ) || (p == Punct::Gt && self.in_vector)
-                // `box { <a> <b> }`: a `<` after a vector starts the next vector.
-                || (p == Punct::Lt && !matches!(a, Value::Float(_)))
+                // `box { <a> <b> }`: a `<` after a vector starts the next vector, and so
+                // does one outside parentheses (measured: POV-Ray reads `poly { 4 <1, ...> }`
+                // as order 4, and refuses `str(A < 0.3, 0, 0)`).
+                || (p == Punct::Lt && (!matches!(a, Value::Float(_)) || self.grouping == 0))
             {
                 break;
             }
@@ -300,7 +302,9 @@ impl Evaluator<'_> {
             TokenKind::Punct(Punct::LParen) => {
                 self.next()?;
                 let saved = std::mem::replace(&mut self.in_vector, false);
+                self.grouping += 1;
                 let r = self.expr();
+                self.grouping -= 1;
                 self.in_vector = saved;
                 let (v, _) = r?;
                 let close = self.expect(Punct::RParen, "to close the parenthesis")?;
@@ -316,7 +320,9 @@ impl Evaluator<'_> {
         let open = self.next()?;
         self.enter(open.span)?;
         let saved = std::mem::replace(&mut self.in_vector, true);
+        let grouping = std::mem::take(&mut self.grouping);
         let r = self.vector_items();
+        self.grouping = grouping;
         self.in_vector = saved;
         self.leave();
         let (c, len) = r?;

@@ -91,6 +91,13 @@ impl Evaluator<'_> {
                 d.fog.colour = colour_of(c);
                 return Ok(true);
             }
+            // A colour identifier or expression without the keyword, as POV-Ray reads it
+            // (`fog { distance 200 Wheat * .5 }`, lights/circular.pov).
+            _ if matches!(self.lookup(word), Some(Value::Colour(_))) => {
+                let (v, span) = self.expr()?;
+                d.fog.colour = colour_of(self.to_colour(&v, span)?);
+                return Ok(true);
+            }
             _ if matches!(self.lookup(word), Some(Value::Fog(_))) => {
                 if let Some(Value::Fog(named)) = self.lookup(word).cloned() {
                     *d = Draft::from(*named);

@@ -74,6 +74,9 @@ pub struct Evaluator<'w> {
     rng_states: Vec<u64>,
     /// Inside `<...>` a `>` closes the vector instead of comparing.
     in_vector: bool,
+    /// How many grouping parentheses the expression being read is inside: POV-Ray reads
+    /// `<` as less-than only there (`poly { 4 <...> }` is an order and a vector).
+    grouping: u32,
     /// What new textures start from; `#default` changes it.
     default_texture: crate::scene::Texture,
     /// The default texture, shared, once `#default` made it differ from the built-in one.
@@ -124,6 +127,7 @@ impl<'w> Evaluator<'w> {
             image_height,
             rng_states: Vec::new(),
             in_vector: false,
+            grouping: 0,
             default_texture: crate::scene::Texture::default(),
             changed_default: None,
             reading_density: false,
