@@ -87,11 +87,17 @@ impl Evaluator<'_> {
     fn ifdef(&mut self, name: &str, span: Span) -> R<()> {
         self.expect(Punct::LParen, &format!("after `#{name}`"))?;
         let id = self.raw_next();
-        let defined = match id.ident() {
-            Some(n) => self.lookup(n).is_some(),
+        let value = match id.ident() {
+            Some(n) => self.lookup(n).cloned(),
             None => return Err(self.expected("an identifier", &id)),
         };
-        // `#ifdef (A[3])`: accept and ignore an index.
+        // `#ifdef (A[3])` asks whether that element is set (html_gen.inc does).
+        let defined = match value {
+            Some(v @ Value::Array(_)) if self.peek()?.is_punct(Punct::LBracket) => {
+                self.array_element(&v)?.0.is_some()
+            }
+            v => v.is_some(),
+        };
         while !self.peek()?.is_punct(Punct::RParen) {
             let t = self.next()?;
             if t.kind == TokenKind::Eof {

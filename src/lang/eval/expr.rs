@@ -597,6 +597,12 @@ impl Evaluator<'_> {
     }
 
     fn index_array(&mut self, v: &Value) -> R<Value> {
+        let (item, span) = self.array_element(v)?;
+        item.ok_or_else(|| self.err(span, "this array element has not been set"))
+    }
+
+    /// The element the indices after an array name select: `None` where it is not set.
+    pub(super) fn array_element(&mut self, v: &Value) -> R<(Option<Value>, Span)> {
         let Value::Array(a) = v else {
             let tok = self.peek()?;
             return Err(self.expected("an array", &tok));
@@ -616,7 +622,7 @@ impl Evaluator<'_> {
         }
         let flat = self.flat_index(&a.borrow().dims, &indices, span)?;
         let item = a.borrow().items.get(flat).cloned().flatten();
-        item.ok_or_else(|| self.err(span, "this array element has not been set"))
+        Ok((item, span))
     }
 
     pub(super) fn flat_index(&self, dims: &[usize], idx: &[(f64, Span)], span: Span) -> R<usize> {

@@ -291,6 +291,15 @@ impl Evaluator<'_> {
                 Some(w)
                     if self.lookup(w).is_none()
                         && self.pattern_modifier(Modified::Pigment(&mut p), w)? => {}
+                // `pigment { Pigments[frame_number - 1] }`: an element of an array of
+                // pigments (or of colours), as portfolio/p_skies.pov writes.
+                Some(w) if first && matches!(self.lookup(w), Some(Value::Array(_))) => {
+                    let (v, span) = self.expr()?;
+                    p = match v {
+                        Value::Pigment(named) => *named,
+                        other => Pigment::solid(colour_of(self.to_colour(&other, span)?)),
+                    };
+                }
                 _ if first || self.starts_colour(&tok)? => {
                     let (c, _) = self.colour()?;
                     p = Pigment::solid(colour_of(c));
@@ -812,6 +821,17 @@ impl Evaluator<'_> {
             };
             if let Some(Value::Finish(named)) = self.lookup(&word).cloned() {
                 self.next()?;
+                f = *named;
+                continue;
+            }
+            // `finish { Finishes[frame_number - 1] }` (portfolio/f_finish.pov).
+            if matches!(self.lookup(&word), Some(Value::Array(_))) {
+                let (v, span) = self.expr()?;
+                let Value::Finish(named) = v else {
+                    return Err(
+                        self.err(span, format!("expected a finish, found {}", v.kind_name()))
+                    );
+                };
                 f = *named;
                 continue;
             }

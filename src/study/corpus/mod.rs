@@ -206,19 +206,33 @@ pub fn run(req: &CorpusRequest, log: &dyn Log) -> Result<Vec<Row>, StudyError> {
     Ok(rows)
 }
 
-/// Parses the scene in a child process and classifies its textures.
+/// Parses the scene in a child process and classifies its textures. A scene with an INI
+/// is parsed as it is rendered, with the INI and its first frame (the portfolio scenes
+/// index their arrays by frame_number, which is 0 without it).
 fn prepare(req: &CorpusRequest, row: &mut Row) {
     let path = req.scenes_dir.join(&row.scene);
     let folder = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+    row.ini = scan::ini_for(&path);
     // Scenes that write data files (html_gen.inc, makestacks.inc) write into a scratch
     // folder, as POV-Ray writes into its working folder.
     let scratch = TempDir::new("corpus-check").ok();
-    let mut args: Vec<OsString> = vec![
-        "check".into(),
-        "-L".into(),
-        folder.into(),
-        path.clone().into(),
-    ];
+    let mut args: Vec<OsString> = match &row.ini {
+        Some(ini) => {
+            let mut library = OsString::from("+L");
+            library.push(&folder);
+            let mut a: Vec<OsString> = vec!["render".into(), ini.into(), path.clone().into()];
+            a.extend(scan::first_frame_args(ini).into_iter().map(OsString::from));
+            a.extend(["+W1".into(), "+H1".into(), "-F".into(), library]);
+            a.extend(["--spp".into(), "1".into(), "--quiet".into()]);
+            a
+        }
+        None => vec![
+            "check".into(),
+            "-L".into(),
+            folder.into(),
+            path.clone().into(),
+        ],
+    };
     if let Some(dir) = &scratch {
         args.extend(["--allow-write".into(), dir.path().into()]);
     }
@@ -230,10 +244,8 @@ fn prepare(req: &CorpusRequest, row: &mut Row) {
             row.test = TestKind::Distribution(words);
         }
     }
-    row.ini = scan::ini_for(&path);
 }
 
-/// Sorts `penumbra check`'s outcome as tests/corpus/check-all.sh does.
 pub fn parse_status(run: &Finished) -> ParseStatus {
     let message = run.message();
     match &run.ended {
