@@ -198,6 +198,28 @@ impl Evaluator<'_> {
         Ok(p)
     }
 
+    /// A pigment of the pattern `w` (the next token): a list pattern with its entries, or
+    /// any other with POV-Ray's default black-to-white map.
+    fn pattern_pigment(&mut self, w: &str) -> R<Pigment> {
+        self.next()?;
+        let kind = self.pattern_kind(w)?;
+        let pattern = self.new_pattern(kind);
+        let kind = if let Some(n) = pattern.kind.list_size() {
+            let entries = self.list_entries(n)?;
+            PigmentKind::List { pattern, entries }
+        } else {
+            PigmentKind::ColourMap {
+                pattern,
+                map: vec![(0.0, Colour::BLACK), (1.0, Colour::rgb(1.0, 1.0, 1.0))],
+            }
+        };
+        Ok(Pigment {
+            kind,
+            transform: Transform::IDENTITY,
+            uv_mapping: false,
+        })
+    }
+
     fn pigment_items(&mut self, mut p: Pigment, close: Punct) -> R<Pigment> {
         let mut first = true;
         // Set when the block closes, so that the transforms written inside still move the
@@ -219,26 +241,7 @@ impl Evaluator<'_> {
             let word = tok.ident().map(str::to_string);
             match word.as_deref() {
                 Some(w) if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
-                    self.next()?;
-                    let kind = self.pattern_kind(w)?;
-                    let pattern = self.new_pattern(kind);
-                    p = if let Some(n) = pattern.kind.list_size() {
-                        let entries = self.list_entries(n)?;
-                        Pigment {
-                            kind: PigmentKind::List { pattern, entries },
-                            transform: Transform::IDENTITY,
-                            uv_mapping: false,
-                        }
-                    } else {
-                        Pigment {
-                            kind: PigmentKind::ColourMap {
-                                pattern,
-                                map: vec![(0.0, Colour::BLACK), (1.0, Colour::rgb(1.0, 1.0, 1.0))],
-                            },
-                            transform: Transform::IDENTITY,
-                            uv_mapping: false,
-                        }
-                    };
+                    p = self.pattern_pigment(w)?;
                 }
                 Some("color_map" | "colour_map") => {
                     self.next()?;
