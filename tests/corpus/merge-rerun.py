@@ -104,15 +104,17 @@ def main():
     table_start = head.index('| | scenes |')
     table_end = head.index('\n\n', table_start)
     head = head[:table_start] + counts(rows).rstrip('\n') + head[table_end:]
-    note = ('Re-measured after fixes with `--only` and merged by tests/corpus/merge-rerun.py: '
-            + ', '.join(sorted(fresh)) + '.\n\n')
+    measured = sorted(s for s in fresh if cells(fresh[s])[3] != 'does not parse')
+    note = ('Re-measured after fixes with `--only` and merged by tests/corpus/merge-rerun.py '
+            '(which also takes the re-run\'s parse of every scene): '
+            + ', '.join(measured) + '.\n\n')
     head = re.sub(r'\nRe-measured after fixes[^\n]*\n', '\n', head)
     head = head.replace('\n| | scenes |', '\n' + note + '| | scenes |', 1)
     order = [cells(r)[0] for r in rows]
     gallery = intro + ''.join('\n' + sections[s] for s in order if s in sections)
     out = head + '## Every scene\n\n' + '\n'.join(header + rows) + '\n\n## Failures\n' + gallery
     open(full_path, 'w').write(out if out.endswith('\n') else out + '\n')
-    print(f'{len(fresh)} rows merged into {full_path}')
+    print(f'{len(measured)} scenes re-measured, {len(fresh)} rows merged into {full_path}')
 
 if __name__ == '__main__':
     main()
