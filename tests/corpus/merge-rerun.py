@@ -104,7 +104,12 @@ def main():
     table_start = head.index('| | scenes |')
     table_end = head.index('\n\n', table_start)
     head = head[:table_start] + counts(rows).rstrip('\n') + head[table_end:]
-    measured = sorted(s for s in fresh if cells(fresh[s])[3] != 'does not parse')
+    measured = {s for s in fresh if cells(fresh[s])[3] != 'does not parse'}
+    # Earlier merges' scenes stay named.
+    earlier = re.search(r'\nRe-measured after fixes[^:]*: ([^\n]*)\.\n', head)
+    if earlier:
+        measured |= set(earlier.group(1).split(', '))
+    measured = sorted(measured)
     note = ('Re-measured after fixes with `--only` and merged by tests/corpus/merge-rerun.py '
             '(which also takes the re-run\'s parse of every scene): '
             + ', '.join(measured) + '.\n\n')
