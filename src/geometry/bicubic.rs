@@ -91,20 +91,24 @@ fn subdivide(piece: Piece, along: u32, across: u32, cut: &Subdivision, out: &mut
         out.push(piece);
         return;
     }
-    let halves = if along > 0 {
-        split_u(&piece).to_vec()
-    } else {
-        vec![piece]
+    // Both ways at once while both have halvings left (four pieces), as the measured
+    // facets of objects/bezier.pov need; then the one left.
+    let halves: Vec<Piece> = match (along > 0, across > 0) {
+        (true, true) => split(&piece, Axis::U)
+            .iter()
+            .flat_map(|h| split(h, Axis::V))
+            .collect(),
+        (true, false) => split(&piece, Axis::U).to_vec(),
+        _ => split(&piece, Axis::V).to_vec(),
     };
-    let along = along.saturating_sub(1);
     for half in halves {
-        if across > 0 {
-            for quarter in split_v(&half) {
-                subdivide(quarter, along, across - 1, cut, out);
-            }
-        } else {
-            subdivide(half, along, 0, cut, out);
-        }
+        subdivide(
+            half,
+            along.saturating_sub(1),
+            across.saturating_sub(1),
+            cut,
+            out,
+        );
     }
 }
 
@@ -130,56 +134,39 @@ fn halve(p: [DVec3; 4]) -> ([DVec3; 4], [DVec3; 4]) {
     ([p[0], p01, p012, mid], [mid, p123, p23, p[3]])
 }
 
-/// The piece cut at the middle of u (along the rows).
-fn split_u(piece: &Piece) -> [Piece; 2] {
-    let (mut lo, mut hi) = (piece.net, piece.net);
-    for j in 0..4 {
-        let row = [0, 1, 2, 3].map(|i| piece.net[4 * j + i]);
-        let (a, b) = halve(row);
-        for i in 0..4 {
-            lo[4 * j + i] = a[i];
-            hi[4 * j + i] = b[i];
-        }
-    }
-    let mid = 0.5 * (piece.u.0 + piece.u.1);
-    [
-        Piece {
-            u: (piece.u.0, mid),
-            net: lo,
-            ..*piece
-        },
-        Piece {
-            u: (mid, piece.u.1),
-            net: hi,
-            ..*piece
-        },
-    ]
+/// The parameter a piece is cut in: u along the rows, v across them.
+#[derive(Clone, Copy, PartialEq)]
+enum Axis {
+    U,
+    V,
 }
 
-/// The piece cut at the middle of v (across the rows).
-fn split_v(piece: &Piece) -> [Piece; 2] {
+/// The piece cut at the middle of `axis`.
+fn split(piece: &Piece, axis: Axis) -> [Piece; 2] {
+    // Control point k of line `line` along the axis.
+    let at = |line: usize, k: usize| match axis {
+        Axis::U => 4 * line + k,
+        Axis::V => 4 * k + line,
+    };
     let (mut lo, mut hi) = (piece.net, piece.net);
-    for i in 0..4 {
-        let column = [0, 1, 2, 3].map(|j| piece.net[4 * j + i]);
-        let (a, b) = halve(column);
-        for j in 0..4 {
-            lo[4 * j + i] = a[j];
-            hi[4 * j + i] = b[j];
+    for line in 0..4 {
+        let (a, b) = halve([0, 1, 2, 3].map(|k| piece.net[at(line, k)]));
+        for k in 0..4 {
+            lo[at(line, k)] = a[k];
+            hi[at(line, k)] = b[k];
         }
     }
-    let mid = 0.5 * (piece.v.0 + piece.v.1);
-    [
-        Piece {
-            v: (piece.v.0, mid),
-            net: lo,
-            ..*piece
-        },
-        Piece {
-            v: (mid, piece.v.1),
-            net: hi,
-            ..*piece
-        },
-    ]
+    let range = if axis == Axis::U { piece.u } else { piece.v };
+    let mid = 0.5 * (range.0 + range.1);
+    let mut halves = [*piece, *piece];
+    halves[0].net = lo;
+    halves[1].net = hi;
+    if axis == Axis::U {
+        (halves[0].u, halves[1].u) = ((range.0, mid), (mid, range.1));
+    } else {
+        (halves[0].v, halves[1].v) = ((range.0, mid), (mid, range.1));
+    }
+    halves
 }
 
 fn degenerate(m: &MeshData, f: [u32; 3]) -> bool {
