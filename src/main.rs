@@ -12,7 +12,9 @@ use penumbra::output::BitDepth;
 use penumbra::povray_args::{self, Job, PovSettings};
 use penumbra::render::{AreaLightMode, LightSamples, RenderOptions, Splitting};
 use penumbra::render_job::{JobProgress, JobSettings, run_job};
-use penumbra::study::reference::{ReferenceRequest, render_reference, write_reference};
+use penumbra::study::reference::{
+    MediaQuadrature, ReferenceRequest, render_reference, write_reference,
+};
 use penumbra::study::{compare as study_compare, converge as study_converge, corpus};
 
 #[derive(Parser)]
@@ -156,6 +158,10 @@ struct ReferenceArgs {
     /// An option for POV-Ray, given before penumbra's own (e.g. an INI file, `+SF1`).
     #[arg(long = "povray-arg", value_name = "ARG", allow_hyphen_values = true)]
     povray_args: Vec<String>,
+    /// Render every media block at `method 2 intervals 10 samples 10`: the integral that
+    /// penumbra estimates, where POV-Ray's default quadrature overshoots it.
+    #[arg(long)]
+    converged_media: bool,
     #[command(flatten)]
     scene_args: SceneArgs,
 }
@@ -199,6 +205,10 @@ struct CorpusArgs {
     /// tests/corpus/known-differences.txt when it exists).
     #[arg(long)]
     known: Option<PathBuf>,
+    /// Scenes judged over an ensemble of noise phases, `scene | anchor` per line (default:
+    /// tests/corpus/phase-ensemble.txt when it exists).
+    #[arg(long)]
+    phase_ensemble: Option<PathBuf>,
     /// Measure in alphabetical order instead of cheapest first (by a 1-sample probe).
     #[arg(long)]
     by_name: bool,
@@ -558,6 +568,11 @@ fn reference(args: ReferenceArgs) -> Result<ExitCode, String> {
         include_paths: args.scene_args.include_paths,
         clock: args.clock,
         extra_args: args.povray_args,
+        media: if args.converged_media {
+            MediaQuadrature::Converged
+        } else {
+            MediaQuadrature::AsWritten
+        },
     };
     let reference = render_reference(&request).map_err(text)?;
     write_reference(&args.output, &reference).map_err(text)?;
@@ -669,7 +684,11 @@ fn corpus(args: CorpusArgs) -> Result<ExitCode, String> {
             reference: args.reference_timeout,
         },
         cheap_first: !args.by_name,
-        known: read_known(args.known.as_deref())?,
+        known: read_list(args.known.as_deref(), "tests/corpus/known-differences.txt")?,
+        phase_ensemble: read_list(
+            args.phase_ensemble.as_deref(),
+            "tests/corpus/phase-ensemble.txt",
+        )?,
     };
     let rows = corpus::run(&request, &StderrLog { quiet: false }).map_err(text)?;
     let passed = rows
@@ -692,9 +711,9 @@ fn text(error: impl std::fmt::Display) -> String {
     error.to_string()
 }
 
-/// The known-differences list: the given file, or the default one if it exists.
-fn read_known(path: Option<&Path>) -> Result<Vec<corpus::known::Known>, String> {
-    let default = Path::new("tests/corpus/known-differences.txt");
+/// A `scene | text` list of the corpus: the given file, or the default one if it exists.
+fn read_list(path: Option<&Path>, default: &str) -> Result<Vec<corpus::known::Known>, String> {
+    let default = Path::new(default);
     let path = match path {
         Some(p) => p,
         None if default.exists() => default,

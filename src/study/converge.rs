@@ -315,6 +315,8 @@ fn measure_povray(study: &Study, csv: &mut Csv) -> Result<Vec<PovrayRow>, StudyE
         include_paths: req.include_paths.clone(),
         clock: None,
         extra_args: Vec::new(),
+        // POV-Ray's speed is charted as users run it, with the scene's own quadrature.
+        media: crate::study::reference::MediaQuadrature::AsWritten,
     };
     let mut povray = Vec::new();
     for (setting, args) in POVRAY_SETTINGS {

@@ -8,6 +8,7 @@ pub mod compare;
 pub mod converge;
 pub mod corpus;
 pub mod distribution;
+pub mod media_quadrature;
 pub mod metrics;
 pub mod parse_bench;
 pub mod reference;

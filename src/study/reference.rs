@@ -11,6 +11,7 @@
 //! `File_Gamma` does not change EXR output. No gamma option is needed.
 
 use super::StudyError;
+use super::media_quadrature;
 use super::tempdir::TempDir;
 use crate::output::{Image, read_exr, write_exr};
 use std::ffi::OsStr;
@@ -41,6 +42,19 @@ pub struct ReferenceRequest {
     /// Options given to POV-Ray before the runner's own (which therefore win over them): an
     /// INI file the scene needs, `+SF1 +EF1` to render one frame of its animation.
     pub extra_args: Vec<String>,
+    /// How POV-Ray integrates the scene's media (`media_quadrature`).
+    pub media: MediaQuadrature,
+}
+
+/// POV-Ray's media quadrature in a reference.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum MediaQuadrature {
+    /// The scene's own `method`, `intervals` and `samples`.
+    #[default]
+    AsWritten,
+    /// Every media block at `method 2 intervals 10 samples 10`: the integral penumbra
+    /// estimates, where POV-Ray's default overshoots it.
+    Converged,
 }
 
 impl ReferenceRequest {
@@ -54,6 +68,7 @@ impl ReferenceRequest {
             include_paths: Vec::new(),
             clock: None,
             extra_args: Vec::new(),
+            media: MediaQuadrature::AsWritten,
         }
     }
 }
@@ -151,6 +166,10 @@ impl<'a> PovrayRunner<'a> {
             path: std::env::temp_dir(),
             source,
         })?;
+        let scene = match req.media {
+            MediaQuadrature::AsWritten => scene,
+            MediaQuadrature::Converged => converged_copy(&scene, dir.path())?,
+        };
         Ok(PovrayRunner {
             povray,
             scene,
@@ -159,6 +178,19 @@ impl<'a> PovrayRunner<'a> {
             dir,
         })
     }
+}
+
+/// The scene rewritten by `media_quadrature::converged` into `dir`, under its own name (its
+/// folder stays first on the include path, so its includes and data files are still found).
+fn converged_copy(scene: &Path, dir: &Path) -> Result<PathBuf, StudyError> {
+    let io = |path: &Path| {
+        let path = path.to_path_buf();
+        move |source| StudyError::Io { path, source }
+    };
+    let text = std::fs::read(scene).map_err(io(scene))?;
+    let copy = dir.join(scene.file_name().unwrap_or(OsStr::new("scene.pov")));
+    std::fs::write(&copy, media_quadrature::converged(&text)).map_err(io(&copy))?;
+    Ok(copy)
 }
 
 /// Stores the k render as the main RGB image, the k/2 render as layer `half`, and k and

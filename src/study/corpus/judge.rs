@@ -131,13 +131,19 @@ pub struct Judgement {
     pub pixel: Verdict,
     /// Computed for every scene (it is cheap), decisive for `TestKind::Distribution`.
     pub distribution: DistributionVerdict,
+    /// For scenes listed in tests/corpus/phase-ensemble.txt, the phase-ensemble test
+    /// (`ensemble`), which decides instead of the distribution test.
+    pub ensemble: Option<DistributionVerdict>,
 }
 
 impl Judgement {
     pub fn passes(&self) -> bool {
         match self.kind {
             TestKind::Pixel => self.pixel.passes(SQRT_B_THRESHOLD),
-            TestKind::Distribution(_) => self.distribution.passes(),
+            TestKind::Distribution(_) => match &self.ensemble {
+                Some(ensemble) => ensemble.passes() && self.pixel.non_finite_count == 0,
+                None => self.distribution.passes(),
+            },
         }
     }
 
@@ -145,9 +151,13 @@ impl Judgement {
     pub fn summary(&self) -> String {
         match self.kind {
             TestKind::Pixel => format!("{}; distribution {}", self.pixel, self.distribution),
-            TestKind::Distribution(_) => {
-                format!("{}; pixel {}", self.distribution, self.pixel)
-            }
+            TestKind::Distribution(_) => match &self.ensemble {
+                Some(ensemble) => format!(
+                    "phase ensemble {ensemble}; distribution {}; pixel {}",
+                    self.distribution, self.pixel
+                ),
+                None => format!("{}; pixel {}", self.distribution, self.pixel),
+            },
         }
     }
 }
@@ -164,6 +174,7 @@ pub fn judge(
         kind: kind.clone(),
         pixel,
         distribution,
+        ensemble: None,
     })
 }
 
@@ -232,7 +243,7 @@ fn statistics(image: &Image, rect: Rect, channel: usize) -> [f64; 4] {
     [mean, q[0], q[1], q[2]]
 }
 
-fn sample_variance(values: &[f64]) -> f64 {
+pub(super) fn sample_variance(values: &[f64]) -> f64 {
     let n = values.len() as f64;
     let mean = values.iter().sum::<f64>() / n;
     values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0)

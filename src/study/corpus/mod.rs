@@ -11,6 +11,7 @@
 //! the markdown table and the gallery of failures, after every scene, so an interrupted
 //! sweep leaves a complete table whose unreached rows say "not measured yet".
 
+pub mod ensemble;
 pub mod exec;
 pub mod judge;
 pub mod known;
@@ -22,6 +23,8 @@ pub use self::judge::{
 };
 
 use super::converge::Log;
+use super::media_quadrature;
+use super::reference::MediaQuadrature;
 use super::{StudyError, TempDir, read_reference};
 use crate::output::{Image, read_exr};
 use exec::{Ended, Finished, run_limited};
@@ -59,6 +62,9 @@ pub struct CorpusRequest {
     pub cheap_first: bool,
     /// Failures whose reason is written down (tests/corpus/known-differences.txt).
     pub known: Vec<known::Known>,
+    /// Scenes judged over noise phases, with the anchor of the shift
+    /// (tests/corpus/phase-ensemble.txt, `ensemble`).
+    pub phase_ensemble: Vec<known::Known>,
 }
 
 /// Time limits in seconds.
@@ -110,6 +116,8 @@ pub struct Row {
     pub test: TestKind,
     /// Both renderers read this INI with the scene, and render its first frame.
     pub ini: Option<PathBuf>,
+    /// POV-Ray's reference at converged media quadrature, for scenes with media blocks.
+    pub media: MediaQuadrature,
     pub outcome: Outcome,
     /// penumbra's K renders, wall time summed.
     pub penumbra_seconds: Option<f64>,
@@ -118,6 +126,8 @@ pub struct Row {
     pub cached: bool,
     /// The reason written down for this scene's failure, if any.
     pub known: Option<String>,
+    /// For scenes judged over noise phases: the text the shift goes after.
+    pub phase_anchor: Option<String>,
 }
 
 impl Row {
@@ -127,11 +137,13 @@ impl Row {
             parse: ParseStatus::TimedOut,
             test: TestKind::Pixel,
             ini: None,
+            media: MediaQuadrature::AsWritten,
             outcome: Outcome::NotMeasured,
             penumbra_seconds: None,
             povray_seconds: None,
             cached: false,
             known: None,
+            phase_anchor: None,
         }
     }
 }
@@ -151,6 +163,7 @@ pub fn run(req: &CorpusRequest, log: &dyn Log) -> Result<Vec<Row>, StudyError> {
         .iter()
         .map(|s| Row {
             known: known::reason(&req.known, s).map(str::to_string),
+            phase_anchor: known::reason(&req.phase_ensemble, s).map(str::to_string),
             ..Row::new(s)
         })
         .collect();
@@ -238,6 +251,9 @@ fn prepare(req: &CorpusRequest, row: &mut Row) {
     }
     let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.parse);
     row.parse = parse_status(&run);
+    if std::fs::read(&path).is_ok_and(|text| media_quadrature::has_media(&text)) {
+        row.media = MediaQuadrature::Converged;
+    }
     if let Ok(files) = scan::sources(&path, &req.include_dirs) {
         let words = scan::noise_words(&files);
         if !words.is_empty() {
@@ -278,8 +294,19 @@ fn measure(req: &CorpusRequest, version: &str, row: &mut Row) {
         }
     };
     row.povray_seconds = Some(reference.povray_seconds);
+    let ensemble = match row.phase_anchor.clone() {
+        Some(anchor) => match phase_ensemble(req, version, &path, row, &anchor) {
+            Ok(verdict) => Some(verdict),
+            Err(message) => {
+                row.outcome = Outcome::RenderFailed(format!("phase ensemble: {message}"));
+                return;
+            }
+        },
+        None => None,
+    };
     row.outcome = match judge(&row.test, &replicates, &reference) {
-        Ok(j) => {
+        Ok(mut j) => {
+            j.ensemble = ensemble;
             if !j.passes() {
                 let mean = mean_image(&replicates);
                 let _ = report::write_gallery_image(req, &row.scene, &mean, &reference.full);
@@ -288,6 +315,45 @@ fn measure(req: &CorpusRequest, version: &str, row: &mut Row) {
         }
         Err(e) => Outcome::RenderFailed(format!("cannot judge: {e}")),
     };
+}
+
+/// Renders `ensemble::PHASES` shifted copies of the scene with both renderers (penumbra one
+/// seed each at a quarter of the sample count, POV-Ray a cached reference each) and runs the
+/// phase-ensemble test.
+fn phase_ensemble(
+    req: &CorpusRequest,
+    version: &str,
+    path: &Path,
+    row: &Row,
+    anchor: &str,
+) -> Result<DistributionVerdict, String> {
+    let text = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let folder = path.parent().unwrap_or(Path::new("."));
+    let dir = TempDir::new("corpus-phase").map_err(|e| format!("temporary folder: {e}"))?;
+    let copy = dir.path().join(path.file_name().unwrap_or_default());
+    let (mut penumbra, mut povray) = (Vec::new(), Vec::new());
+    for k in 0..ensemble::PHASES {
+        let shifted = ensemble::shifted(&text, anchor, k)
+            .ok_or_else(|| format!("the anchor `{anchor}` is not in the scene"))?;
+        std::fs::write(&copy, shifted).map_err(|e| format!("{}: {e}", copy.display()))?;
+        let source = Source {
+            scene: &copy,
+            folder,
+        };
+        let replicate = Replicate {
+            seed: 200 + k as u64,
+            spp: (req.spp / 4).max(1),
+        };
+        penumbra.push(render_one(req, source, row.ini.as_deref(), replicate)?.0);
+        let job = ReferenceJob {
+            original: path,
+            source,
+            supersample: ensemble::PHASE_SUPERSAMPLE,
+            variant: Some(format!("phase {k} after {anchor}")),
+        };
+        povray.push(reference_of(req, version, row, &job)?.0);
+    }
+    ensemble::ensemble_test(&penumbra, &povray).map_err(|e| e.to_string())
 }
 
 /// Indices sorted by cost, ascending (ties by index).
@@ -338,35 +404,70 @@ fn render_replicates(
     path: &Path,
     row: &mut Row,
 ) -> Result<Vec<Image>, String> {
-    let dir = TempDir::new("corpus").map_err(|e| format!("temporary folder: {e}"))?;
+    let folder = path.parent().unwrap_or(Path::new("."));
+    let source = Source {
+        scene: path,
+        folder,
+    };
     let mut images = Vec::new();
     let mut seconds = 0.0;
     for k in 0..req.seeds {
-        // A folder per seed: with an INI that animates, the frame's number goes into the
-        // file's name.
-        let out_dir = dir.path().join(format!("seed-{k}"));
-        std::fs::create_dir_all(&out_dir).map_err(|e| format!("temporary folder: {e}"))?;
-        let args = replicate_args(req, path, row.ini.as_deref(), &out_dir, dir.path(), k);
-        let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.render);
-        seconds += run.seconds;
-        match &run.ended {
-            Ended::Success => {}
-            Ended::TimedOut => {
-                return Err(format!("penumbra timed out ({} s)", req.timeouts.render));
-            }
-            Ended::Failed(_) if run.panicked() => {
-                return Err(format!("penumbra panicked: {}", run.message()));
-            }
-            Ended::Failed(status) => {
-                return Err(format!("penumbra failed ({status}): {}", run.message()));
-            }
-        }
-        let output = single_file(&out_dir)?;
-        let image = read_exr(&output).map_err(|e| e.to_string())?.image;
+        let replicate = Replicate {
+            seed: 100 + u64::from(k),
+            spp: req.spp,
+        };
+        let (image, time) = render_one(req, source, row.ini.as_deref(), replicate)?;
         images.push(image);
+        seconds += time;
     }
     row.penumbra_seconds = Some(seconds);
     Ok(images)
+}
+
+/// One `penumbra render` child: its image and wall time.
+fn render_one(
+    req: &CorpusRequest,
+    source: Source,
+    ini: Option<&Path>,
+    replicate: Replicate,
+) -> Result<(Image, f64), String> {
+    let dir = TempDir::new("corpus").map_err(|e| format!("temporary folder: {e}"))?;
+    // A folder of its own: with an INI that animates, the frame's number goes into the
+    // file's name.
+    let out_dir = dir.path().join("out");
+    std::fs::create_dir_all(&out_dir).map_err(|e| format!("temporary folder: {e}"))?;
+    let args = replicate_args(req, source, ini, &out_dir, dir.path(), replicate);
+    let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.render);
+    match &run.ended {
+        Ended::Success => {}
+        Ended::TimedOut => {
+            return Err(format!("penumbra timed out ({} s)", req.timeouts.render));
+        }
+        Ended::Failed(_) if run.panicked() => {
+            return Err(format!("penumbra panicked: {}", run.message()));
+        }
+        Ended::Failed(status) => {
+            return Err(format!("penumbra failed ({status}): {}", run.message()));
+        }
+    }
+    let output = single_file(&out_dir)?;
+    let image = read_exr(&output).map_err(|e| e.to_string())?.image;
+    Ok((image, run.seconds))
+}
+
+/// What a render or a reference reads: the scene file (the original, or a rewritten copy
+/// in a scratch folder) and the folder its includes and data files are found in.
+#[derive(Clone, Copy)]
+struct Source<'a> {
+    scene: &'a Path,
+    folder: &'a Path,
+}
+
+/// One penumbra render of a source.
+#[derive(Clone, Copy)]
+struct Replicate {
+    seed: u64,
+    spp: u32,
 }
 
 /// One replicate's command line. A scene with an INI is rendered the POV-Ray way, the INI
@@ -375,18 +476,18 @@ fn render_replicates(
 /// frame_number.
 fn replicate_args(
     req: &CorpusRequest,
-    path: &Path,
+    source: Source,
     ini: Option<&Path>,
     out_dir: &Path,
     scratch: &Path,
-    k: u32,
+    replicate: Replicate,
 ) -> Vec<OsString> {
     let mut args: Vec<OsString> = vec!["render".into()];
     let own = [
         "--spp".into(),
-        req.spp.to_string().into(),
+        replicate.spp.to_string().into(),
         "--seed".into(),
-        (100 + u64::from(k)).to_string().into(),
+        replicate.seed.to_string().into(),
         "--quiet".into(),
         "--allow-write".into(),
         scratch.into(),
@@ -394,12 +495,12 @@ fn replicate_args(
     match ini {
         Some(ini) => {
             args.push(ini.into());
-            args.push(path.into());
+            args.push(source.scene.into());
             args.extend(scan::first_frame_args(ini).into_iter().map(OsString::from));
             let mut output = OsString::from("+O");
             output.push(out_dir.join("image.exr"));
             let mut library = OsString::from("+L");
-            library.push(scene_folder(path));
+            library.push(source.folder);
             args.extend([
                 format!("+W{}", req.width).into(),
                 format!("+H{}", req.height).into(),
@@ -409,7 +510,7 @@ fn replicate_args(
             ]);
         }
         None => args.extend([
-            path.into(),
+            source.scene.into(),
             "--output".into(),
             out_dir.join("image.exr").into(),
             "--width".into(),
@@ -417,7 +518,7 @@ fn replicate_args(
             "--height".into(),
             req.height.to_string().into(),
             "-L".into(),
-            scene_folder(path),
+            source.folder.into(),
         ]),
     }
     args.extend(own);
@@ -445,25 +546,62 @@ fn cached_reference(
     path: &Path,
     row: &mut Row,
 ) -> Result<super::Reference, String> {
-    let files = scan::sources(path, &req.include_dirs).map_err(|e| e.to_string())?;
+    let folder = path.parent().unwrap_or(Path::new("."));
+    let source = Source {
+        scene: path,
+        folder,
+    };
+    let job = ReferenceJob {
+        original: path,
+        source,
+        supersample: req.supersample,
+        variant: None,
+    };
+    let (reference, cached) = reference_of(req, version, row, &job)?;
+    row.cached = cached;
+    Ok(reference)
+}
+
+/// A POV-Ray reference to fetch or render: of `source`, cached under the key of `original`
+/// (the scene file and its includes) and the `variant` (what was changed in the copy).
+struct ReferenceJob<'a> {
+    original: &'a Path,
+    source: Source<'a>,
+    supersample: u32,
+    variant: Option<String>,
+}
+
+/// The job's reference and whether it came from the cache.
+fn reference_of(
+    req: &CorpusRequest,
+    version: &str,
+    row: &Row,
+    job: &ReferenceJob,
+) -> Result<(super::Reference, bool), String> {
+    let files = scan::sources(job.original, &req.include_dirs).map_err(|e| e.to_string())?;
     let extra_args = row.ini.as_deref().map(scan::ini_args).unwrap_or_default();
+    let key_args: Vec<String> = extra_args
+        .iter()
+        .cloned()
+        .chain(job.variant.clone())
+        .collect();
     let key = scan::ReferenceKey {
         files: &files,
         width: req.width,
         height: req.height,
-        supersample: req.supersample,
+        supersample: job.supersample,
         povray_version: version,
-        extra_args: &extra_args,
+        extra_args: &key_args,
+        media: row.media,
     };
     let cached = req.cache.join("references").join(key.file_name(&row.scene));
     if let Ok(reference) = read_reference(&cached) {
-        row.cached = true;
-        return Ok(reference);
+        return Ok((reference, true));
     }
     let partial = cached.with_extension("partial.exr");
     let mut args: Vec<OsString> = vec![
         "reference".into(),
-        path.into(),
+        job.source.scene.into(),
         "--output".into(),
         partial.clone().into(),
         "--width".into(),
@@ -471,15 +609,18 @@ fn cached_reference(
         "--height".into(),
         req.height.to_string().into(),
         "--supersample".into(),
-        req.supersample.to_string().into(),
+        job.supersample.to_string().into(),
         "-L".into(),
-        scene_folder(path),
+        job.source.folder.into(),
     ];
     args.extend(
         extra_args
             .iter()
             .map(|a| format!("--povray-arg={a}").into()),
     );
+    if row.media == MediaQuadrature::Converged {
+        args.push("--converged-media".into());
+    }
     let run = run_limited(&req.penumbra.clone().into(), &args, req.timeouts.reference);
     match run.ended {
         Ended::Success => {}
@@ -489,7 +630,8 @@ fn cached_reference(
         Ended::Failed(_) => return Err(format!("POV-Ray failed: {}", povray_error(&run))),
     }
     std::fs::rename(&partial, &cached).map_err(|e| e.to_string())?;
-    read_reference(&cached).map_err(|e| e.to_string())
+    let reference = read_reference(&cached).map_err(|e| e.to_string())?;
+    Ok((reference, false))
 }
 
 /// POV-Ray's own error line, when `penumbra reference` relays one.

@@ -5,6 +5,7 @@ use super::judge::{DIST_BLOCK, DIST_Z, TestKind};
 use super::{CorpusRequest, Outcome, ParseStatus, Row, scan};
 use crate::output::{BitDepth, Image, write_image};
 use crate::study::StudyError;
+use crate::study::reference::MediaQuadrature;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -101,6 +102,17 @@ fn parse_text(parse: &ParseStatus) -> &'static str {
 }
 
 fn test_text(row: &Row) -> String {
+    let mut kind = kind_text(row);
+    if row.phase_anchor.is_some() {
+        kind.push_str(", phase ensemble");
+    }
+    match row.media {
+        MediaQuadrature::AsWritten => kind,
+        MediaQuadrature::Converged => format!("{kind}, media converged"),
+    }
+}
+
+fn kind_text(row: &Row) -> String {
     match &row.test {
         TestKind::Pixel => "pixel".into(),
         TestKind::Distribution(words) => {
@@ -123,16 +135,26 @@ fn detail_text(row: &Row) -> String {
         (_, Outcome::Judged(j)) => {
             let p = &j.pixel;
             let d = &j.distribution;
-            format!(
-                "sqrt(B) {:.4}, tiles failed {}/{}, non-finite {}; distribution blocks failed {}/{}, worst {:.2}",
-                p.sqrt_b,
-                p.tiles.failed(),
-                p.tiles.tested,
-                p.non_finite_count,
-                d.failures.len(),
-                d.tested,
-                d.worst_ratio
-            )
+            let ensemble = j.ensemble.as_ref().map_or(String::new(), |e| {
+                format!(
+                    "phase ensemble of {}: blocks failed {}/{}, worst {:.2}; ",
+                    super::ensemble::PHASES,
+                    e.failures.len(),
+                    e.tested,
+                    e.worst_ratio
+                )
+            });
+            ensemble
+                + &format!(
+                    "sqrt(B) {:.4}, tiles failed {}/{}, non-finite {}; distribution blocks failed {}/{}, worst {:.2}",
+                    p.sqrt_b,
+                    p.tiles.failed(),
+                    p.tiles.tested,
+                    p.non_finite_count,
+                    d.failures.len(),
+                    d.tested,
+                    d.worst_ratio
+                )
         }
         _ => String::new(),
     };
@@ -221,7 +243,11 @@ fn method(context: &Context) -> String {
 penumbra renders each scene {seeds} times (seeds 100..) at {w}x{h}, {spp} samples per pixel;
 POV-Ray renders it {k} and {k2} times larger without anti-aliasing, averaged over k x k
 blocks (`penumbra reference`). Animated scenes are compared at clock 0; a scene whose folder
-holds its INI file is rendered by both with it (its first frame only).
+holds its INI file is rendered by both with it (its first frame only). A scene with media
+(\"media converged\") is rendered by POV-Ray with every media block ending in `method 2
+intervals 10 samples 10` (`penumbra reference --converged-media`): POV-Ray's default
+quadrature overshoots the integral by 2-25% where media glows, and penumbra estimates the
+integral itself (docs/differences.md, \"Media: the integral\").
 
 - **pixel test** (docs: shared testing-statistics.md): sqrt(B) on 4x4 block means <= 0.005,
   no failing 8x8 tile (z* = 4.78, delta = 0.004 + 0.02 |r|), every value finite.
@@ -240,6 +266,17 @@ holds its INI file is rendered by both with it (its first frame only).
   whole image (a gain, an offset) about sqrt(12) times smaller than one block does. It catches a wrong
   colour, brightness, missing object or camera over a block, not detail inside a busy block.
   The derivation is in src/study/corpus/judge.rs.
+- **phase ensemble**, for the noise scenes listed in tests/corpus/phase-ensemble.txt, whose
+  noise is larger than the blocks (a cloud sky spanning the image), so that one phase decides
+  every block and POV-Ray's own image moves by more than the distribution test allows when
+  the noise is shifted: {phases} copies, the noise shifted by `translate <7k, 3k, 5k>` after
+  the listed anchor, are rendered by both (penumbra one seed at {phase_spp} spp, POV-Ray at
+  k = {phase_k}); per channel and block, and pooled, the block mean averaged over the phases
+  must agree within 0.005 + 0.02 |r| + t SE, SE^2 = the two ensembles' variances / {phases}
+  (plus the references' own error), t Student's at Welch's degrees of freedom for alpha =
+  1e-3 (Sidak) over the tests. Where the noise does not reach, the phases do not spread and
+  the test is as sharp as the pixel test. It decides instead of the distribution test
+  (src/study/corpus/ensemble.rs).
 
 Both statistics are computed for every scene; the test named in the table decides.
 
@@ -253,6 +290,9 @@ Both statistics are computed for every scene; the test named in the table decide
         b = DIST_BLOCK,
         z = DIST_Z,
         keywords = scan::NOISE_KEYWORDS[..16].join(", "),
+        phases = super::ensemble::PHASES,
+        phase_spp = (req.spp / 4).max(1),
+        phase_k = super::ensemble::PHASE_SUPERSAMPLE,
     )
 }
 

@@ -2,6 +2,8 @@
 //! cache key of its POV-Ray reference, whether its textures use POV-Ray's noise, and the INI
 //! file it comes with.
 
+use crate::study::media_quadrature;
+use crate::study::reference::MediaQuadrature;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
@@ -322,6 +324,7 @@ pub struct ReferenceKey<'a> {
     pub supersample: u32,
     pub povray_version: &'a str,
     pub extra_args: &'a [String],
+    pub media: MediaQuadrature,
 }
 
 impl ReferenceKey<'_> {
@@ -331,6 +334,10 @@ impl ReferenceKey<'_> {
         h.write(b"penumbra corpus reference v1");
         h.write(self.povray_version.as_bytes());
         h.write(format!("{}x{} k={}", self.width, self.height, self.supersample).as_bytes());
+        // As-written keys are those of before the option existed, so their caches stay valid.
+        if self.media == MediaQuadrature::Converged {
+            h.write(media_quadrature::CONVERGED_SETTINGS.as_bytes());
+        }
         for arg in self.extra_args {
             h.write(arg.as_bytes());
             if let Ok(text) = std::fs::read(arg) {

@@ -85,6 +85,7 @@ fn the_cache_key_follows_content_size_k_and_version() {
         supersample: 16,
         povray_version: "POV-Ray 3.7.0.10",
         extra_args: &[],
+        media: MediaQuadrature::AsWritten,
     };
     let name = key.file_name("a/b.pov");
     assert!(name.starts_with("a_b-") && name.ends_with(".exr"), "{name}");
@@ -105,6 +106,10 @@ fn the_cache_key_follows_content_size_k_and_version() {
         },
         ReferenceKey {
             povray_version: "POV-Ray 3.8",
+            ..key.clone()
+        },
+        ReferenceKey {
+            media: MediaQuadrature::Converged,
             ..key.clone()
         },
     ];
@@ -255,6 +260,7 @@ fn the_report_has_every_row_and_the_counts() {
         timeouts: Timeouts::default(),
         cheap_first: true,
         known: Vec::new(),
+        phase_ensemble: Vec::new(),
     };
     let mut rows = vec![
         Row::new("a/parsed.pov"),
