@@ -36,6 +36,13 @@ PATTERNS = {
     "bozo_turbulence_strong": "bozo turbulence 1.5 octaves 10 omega 0.5 lambda 2.5",
     "bozo_turbulence_one_octave": "bozo turbulence 0.5 octaves 1",
     "granite_turbulence": "granite turbulence 0.65 octaves 6 omega 0.7 lambda 2",
+    "crackle": "crackle",
+    "crackle_d1": "crackle form <1, 0, 0>",
+    "crackle_d3": "crackle form <0, 0, 1>",
+    "crackle_metric1": "crackle metric 1",
+    "crackle_metric3": "crackle form <1, 0, 0> metric 3",
+    "crackle_offset": "crackle offset 0.5",
+    "crackle_solid": "crackle solid",
 }
 SIZE = 512
 EXTENT = 32.0

@@ -3,6 +3,7 @@
 //! (shared/pov-semantics.md), including where that is not physical.
 
 pub mod blend;
+pub mod crackle;
 pub mod finish;
 pub mod noise;
 pub mod normal;

@@ -23,7 +23,7 @@ const DNOISE_SCALE: f64 = 1.0;
 
 /// A 32-bit integer hash (lowbias32 by Chris Wellons), good enough to pick gradients.
 #[inline]
-fn hash(mut x: u32) -> u32 {
+pub(crate) fn hash(mut x: u32) -> u32 {
     x ^= x >> 16;
     x = x.wrapping_mul(0x7feb_352d);
     x ^= x >> 15;
@@ -33,7 +33,7 @@ fn hash(mut x: u32) -> u32 {
 }
 
 #[inline]
-fn lattice_hash(i: i64, j: i64, k: i64, seed: u32) -> u32 {
+pub(crate) fn lattice_hash(i: i64, j: i64, k: i64, seed: u32) -> u32 {
     let h = hash((i as u32) ^ seed);
     let h = hash(h ^ (j as u32).wrapping_mul(0x9e37_79b9));
     hash(h ^ (k as u32).wrapping_mul(0x85eb_ca6b))

@@ -26,7 +26,7 @@ pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
 };
 pub use texture::{
-    Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
+    Crackle, Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
     PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
 };
 

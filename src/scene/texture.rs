@@ -137,6 +137,7 @@ pub enum PatternKind {
     Spherical,
     Cylindrical,
     Boxed,
+    Crackle(Crackle),
     /// `density_file df3 "file" [interpolate k]`: a voxel grid over the unit cube.
     DensityFile(std::sync::Arc<VoxelGrid>),
     /// `function { ... }`: the function's value at the point, wrapped as gradient's is.
@@ -171,6 +172,29 @@ impl PatternKind {
             | PatternKind::Spiral1(_)
             | PatternKind::Spiral2(_) => Wave::Triangle,
             _ => Wave::Ramp,
+        }
+    }
+}
+
+/// `crackle`'s settings (src/appearance/crackle.rs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crackle {
+    /// Weights of the distances to the nearest, second and third nearest cell points.
+    pub form: DVec3,
+    /// The Minkowski exponent of the distance.
+    pub metric: f64,
+    pub offset: f64,
+    /// One value per cell.
+    pub solid: bool,
+}
+
+impl Default for Crackle {
+    fn default() -> Self {
+        Crackle {
+            form: DVec3::new(-1.0, 1.0, 0.0),
+            metric: 2.0,
+            offset: 0.0,
+            solid: false,
         }
     }
 }

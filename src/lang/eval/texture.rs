@@ -9,8 +9,9 @@ use super::super::syntax::{Punct, TokenKind};
 use super::Evaluator;
 use super::value::{Value, colour_of};
 use crate::scene::{
-    Colour, Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
-    PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Transform, Turbulence, Warp, Wave,
+    Colour, Crackle, Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind,
+    Pigment, PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Transform, Turbulence, Warp,
+    Wave,
 };
 
 type R<T> = Result<T, Diagnostic>;
@@ -20,7 +21,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "aoi",
     "average",
     "cells",
-    "crackle",
     "facets",
     "image_pattern",
     "julia",
@@ -40,6 +40,7 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
 /// Pattern keywords penumbra models.
 const PATTERNS: &[&str] = &[
     "density_file",
+    "crackle",
     "checker",
     "hexagon",
     "brick",
@@ -161,6 +162,33 @@ const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
         let m = ev.float()?;
         if let PatternKind::Brick { mortar, .. } = &mut p.kind {
             *mortar = m;
+        }
+        Ok(())
+    }),
+    ("form", |ev, p| {
+        let v = ev.vector3()?;
+        if let PatternKind::Crackle(c) = &mut p.kind {
+            c.form = v;
+        }
+        Ok(())
+    }),
+    ("metric", |ev, p| {
+        let m = ev.float()?;
+        if let PatternKind::Crackle(c) = &mut p.kind {
+            c.metric = m;
+        }
+        Ok(())
+    }),
+    ("offset", |ev, p| {
+        let o = ev.float()?;
+        if let PatternKind::Crackle(c) = &mut p.kind {
+            c.offset = o;
+        }
+        Ok(())
+    }),
+    ("solid", |_, p| {
+        if let PatternKind::Crackle(c) = &mut p.kind {
+            c.solid = true;
         }
         Ok(())
     }),
@@ -342,6 +370,7 @@ impl Evaluator<'_> {
             "spherical" => PatternKind::Spherical,
             "cylindrical" => PatternKind::Cylindrical,
             "boxed" => PatternKind::Boxed,
+            "crackle" => PatternKind::Crackle(Crackle::default()),
             "density_file" => PatternKind::DensityFile(std::sync::Arc::new(self.density_file()?)),
             "function" => {
                 let span = self.peek()?.span;

@@ -13,7 +13,9 @@
 //! phase and, for penumbra, of sampling), plus the references' own error (the mean over phases
 //! of (m(r_k) - m(r_k/2))^2). A test fails when |d| > delta + t SE, delta as in the
 //! distribution test, t the Student quantile at Welch's degrees of freedom for the Sidak
-//! level of alpha = 1e-3 over all the tests. Blocks the noise does not reach have no phase
+//! level of alpha = 1e-3 over all the tests. The pooled image's spread over the phases is
+//! compared too (`record_spread`): a noise whose large scales vary more or less than
+//! POV-Ray's fails there even when its mean agrees. Blocks the noise does not reach have no phase
 //! spread, so a wrong colour, brightness, object or camera there fails as in the pixel test;
 //! in the sky the test is as sharp as the phases' spread over sqrt(N) allows.
 
@@ -29,18 +31,32 @@ pub const PHASE_SUPERSAMPLE: u32 = 4;
 /// Family-wise false-failure rate of one scene's tests.
 const ALPHA: f64 = 1e-3;
 
-/// The scene text with `translate <7k, 3k, 5k>` after the first occurrence of `anchor`, or
-/// `None` when the anchor is not in it. Phase 0 is the scene as written.
-pub fn shifted(text: &[u8], anchor: &str, k: usize) -> Option<Vec<u8>> {
-    let at = text
-        .windows(anchor.len().max(1))
-        .position(|w| w == anchor.as_bytes())?
-        + anchor.len();
-    let mut out = text[..at].to_vec();
-    if k > 0 {
-        out.extend_from_slice(format!(" translate <{}, {}, {}>", 7 * k, 3 * k, 5 * k).as_bytes());
+/// Separates the anchors of one scene (a scene may have several noises whose features are
+/// larger than the blocks: a cloud plane and a turbulent fog).
+pub const ANCHOR_SEPARATOR: &str = ";;";
+
+/// The scene text with `translate <7k, 3k, 5k>` after the first occurrence of each anchor,
+/// or `None` when one is not in it. Phase 0 is the scene as written.
+pub fn shifted(text: &[u8], anchors: &str, k: usize) -> Option<Vec<u8>> {
+    let mut ends = Vec::new();
+    for anchor in anchors.split(ANCHOR_SEPARATOR).map(str::trim) {
+        let at = text
+            .windows(anchor.len().max(1))
+            .position(|w| w == anchor.as_bytes())?;
+        ends.push(at + anchor.len());
     }
-    out.extend_from_slice(&text[at..]);
+    ends.sort_unstable();
+    let shift = format!(" translate <{}, {}, {}>", 7 * k, 3 * k, 5 * k);
+    let mut out = Vec::with_capacity(text.len() + ends.len() * shift.len());
+    let mut last = 0;
+    for end in ends {
+        out.extend_from_slice(&text[last..end]);
+        if k > 0 {
+            out.extend_from_slice(shift.as_bytes());
+        }
+        last = end;
+    }
+    out.extend_from_slice(&text[last..]);
     Some(out)
 }
 
@@ -69,7 +85,8 @@ pub fn ensemble_test(
         }
     }
     let blocks = blocks(w, h);
-    let tests = (blocks.len() + 1) * 3;
+    // Means per block and pooled, and the pooled spread, per channel.
+    let tests = (blocks.len() + 2) * 3;
     let mut verdict = DistributionVerdict::default();
     for channel in 0..3 {
         let mut pooled = Samples::zero(penumbra.len());
@@ -80,8 +97,44 @@ pub fn ensemble_test(
         }
         let units = (blocks.len() as f64, tests);
         record(&mut verdict, None, channel, &pooled, units);
+        record_spread(&mut verdict, channel, &pooled, units);
     }
     Ok(verdict)
+}
+
+/// Tests the pooled image's spread over the phases: the noise's large scales must vary as
+/// much from phase to phase in penumbra as in POV-Ray. ln(s_x^2 / s_r^2) is about normal with
+/// variance 2 / (N - 1) for each of the two (Bartlett); each variance gets the mean test's
+/// squared tolerance added, so that spreads smaller than what the mean test allows (and
+/// penumbra's own sampling noise, which POV-Ray's references lack) do not count.
+fn record_spread(
+    verdict: &mut DistributionVerdict,
+    channel: usize,
+    s: &Samples,
+    (blocks, tests): (f64, usize),
+) {
+    let n = s.x.len() as f64;
+    let floor = (DIST_ABS_TOLERANCE * blocks).powi(2);
+    let (vx, vr) = (sample_variance(&s.x) + floor, sample_variance(&s.r) + floor);
+    let d = (vx / vr).ln();
+    let threshold = student_critical(ALPHA, tests, f64::INFINITY) * (4.0 / (n - 1.0)).sqrt();
+    let ratio = d.abs() / threshold;
+    verdict.tested += 1;
+    verdict.worst_ratio = if ratio.is_finite() {
+        verdict.worst_ratio.max(ratio)
+    } else {
+        f64::INFINITY
+    };
+    if d.is_nan() || d.abs() > threshold {
+        verdict.failures.push(DistributionFailure {
+            block: None,
+            channel,
+            statistic: "phase spread (ln variance ratio)",
+            d,
+            threshold,
+            reference: vr.sqrt(),
+        });
+    }
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -279,7 +332,11 @@ mod tests {
     /// A phase of a scene: a sky (top half) whose brightness the phase moves by up to
     /// +-0.15, over a ground whose colour is fixed, plus per-pixel sampling noise.
     fn phase(seed: u64, sky_offset: f64, ground_gain: f32) -> Image {
-        let sky = 0.5 + 0.3 * uniform(seed);
+        phase_spread(seed, sky_offset, ground_gain, 1.0)
+    }
+
+    fn phase_spread(seed: u64, sky_offset: f64, ground_gain: f32, spread: f64) -> Image {
+        let sky = 0.5 + 0.3 * spread * uniform(seed);
         Image::from_fn(160, 120, |x, y| {
             let noise = 0.02 * uniform(seed * 100_003 + (y * 160 + x) as u64) as f32;
             if y < 60 {
@@ -327,6 +384,20 @@ mod tests {
         // allow (the threshold is about 5.5 SE, SE = 0.087 sqrt(2 / 16) = 0.031).
         let bright = ensemble_test(&penumbra(5000, 0.3, 1.0), &povray).expect("test");
         assert!(!bright.passes(), "{bright}");
+        // The same mean, but a sky that varies 4 times as much from phase to phase: the
+        // means pass, the spread fails (ln 16 = 2.8 against a threshold near 2.2).
+        let wild: Vec<Image> = (0..PHASES as u64)
+            .map(|k| phase_spread(5000 + k, 0.0, 1.0, 4.0))
+            .collect();
+        let wild = ensemble_test(&wild, &povray).expect("test");
+        assert!(
+            !wild.passes()
+                && wild
+                    .failures
+                    .iter()
+                    .all(|f| f.statistic.starts_with("phase spread")),
+            "{wild}"
+        );
     }
 
     #[test]
@@ -358,5 +429,12 @@ mod tests {
         );
         assert_eq!(shifted(text, "S_Cloud5", 0).expect("anchor"), text);
         assert!(shifted(text, "bozo", 1).is_none());
+        assert!(shifted(text, "S_Cloud5 ;; bozo", 1).is_none());
+        // Several anchors, in any order: each first occurrence is shifted.
+        let both = shifted(text, "y, 0 ;; sky_sphere {", 1).expect("anchors");
+        assert_eq!(
+            both,
+            b"sky_sphere { translate <7, 3, 5> S_Cloud5 } plane { y, 0 translate <7, 3, 5> pigment { S_Cloud5 } }"
+        );
     }
 }

@@ -274,7 +274,9 @@ integral itself (docs/differences.md, \"Media: the integral\").
   k = {phase_k}); per channel and block, and pooled, the block mean averaged over the phases
   must agree within 0.005 + 0.02 |r| + t SE, SE^2 = the two ensembles' variances / {phases}
   (plus the references' own error), t Student's at Welch's degrees of freedom for alpha =
-  1e-3 (Sidak) over the tests. Where the noise does not reach, the phases do not spread and
+  1e-3 (Sidak) over the tests; and the pooled image's spread over the phases must agree
+  (ln of the variance ratio within z sqrt(4 / (N - 1)), each variance floored by the mean
+  test's squared tolerance). Where the noise does not reach, the phases do not spread and
   the test is as sharp as the pixel test. It decides instead of the distribution test
   (src/study/corpus/ensemble.rs).
 
