@@ -5,7 +5,8 @@
 //! Each scene must pass the test its classification names; for the distribution-test scenes
 //! a 20% brighter penumbra must fail it, so the phase-blind test is shown to see brightness
 //! (measured: 10% brighter fails bumps, rdgranit and bubinga; bozo passes it at 0.95 of its
-//! threshold).
+//! threshold). media4 is judged against POV-Ray at converged media quadrature, as the sweep
+//! judges media scenes, and must fail against POV-Ray's image as written.
 
 use std::path::{Path, PathBuf};
 
@@ -13,6 +14,7 @@ use penumbra::lang::{LoadOptions, load_scene};
 use penumbra::output::Image;
 use penumbra::render::RenderOptions;
 use penumbra::study::corpus::{self, TestKind, scan};
+use penumbra::study::media_quadrature;
 use penumbra::study::read_reference;
 
 const EXAMPLES: &str = "/usr/share/povray-3.7/scenes";
@@ -34,6 +36,7 @@ const SAMPLE: &[(&str, bool)] = &[
     ("textures/patterns/onion.pov", false),
     ("textures/patterns/radial.pov", false),
     ("interior/iortest.pov", false),
+    ("interior/media/media4.pov", false),
     ("incdemo/metals/golds.pov", false),
     ("incdemo/finish.pov", false),
     ("textures/patterns/bozo.pov", true),
@@ -66,6 +69,15 @@ fn replicates(path: &Path) -> Vec<Image> {
         .collect()
 }
 
+/// A committed reference: POV-Ray's at converged media quadrature for scenes with media
+/// (`penumbra reference --converged-media`, as the sweep renders them), `suffix` naming
+/// another version.
+fn reference_path(scene: &str, suffix: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/references/examples")
+        .join(format!("{}{suffix}.exr", scan::flat_name(scene)))
+}
+
 /// The scene's test, from the instrument's static scan.
 fn classify(path: &Path) -> TestKind {
     let files = scan::sources(path, &[PathBuf::from(INCLUDES)]).expect("readable");
@@ -91,15 +103,25 @@ fn a_sample_of_the_corpus_matches_povray() {
             failures.push(format!("{scene}: classified {kind:?}"));
             continue;
         }
-        let reference = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-            .join("tests/references/examples")
-            .join(format!("{}.exr", scan::flat_name(scene)));
-        let reference = read_reference(&reference).expect("committed reference");
+        let reference = read_reference(&reference_path(scene, "")).expect("committed reference");
         let images = replicates(&path);
         let judgement = corpus::judge(&kind, &images, &reference).expect("comparable");
         println!("{scene}: {}", judgement.summary());
         if !judgement.passes() {
             failures.push(format!("{scene}: {}", judgement.summary()));
+        }
+        if media_quadrature::has_media(&std::fs::read(&path).expect("readable")) {
+            // The reference is POV-Ray's at converged quadrature; against POV-Ray's image as
+            // written (method 3, 5 samples, 6% brighter) penumbra must fail.
+            let as_written = reference_path(scene, "-as-written");
+            let as_written = read_reference(&as_written).expect("committed reference");
+            let wrong = corpus::judge(&kind, &images, &as_written).expect("comparable");
+            if wrong.passes() {
+                failures.push(format!(
+                    "{scene}: passes against POV-Ray's quadrature as written too: {}",
+                    wrong.summary()
+                ));
+            }
         }
         if noisy {
             let brighter: Vec<Image> = images.iter().map(|i| i.map(|v| v * 1.2)).collect();
