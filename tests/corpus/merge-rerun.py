@@ -31,7 +31,7 @@ def counts(rows):
     for r in rows:
         scene, parses, test, result = cells(r)[:4]
         c['scenes'] += 1
-        pixel = test == 'pixel'
+        pixel = test.split(',')[0] == 'pixel'
         if parses == 'yes':
             c['parse'] += 1
         if result in ('pass', '**FAIL**', 'fail, reason known', 'POV-Ray failed'):
@@ -86,7 +86,11 @@ def main():
     partial_path, full_path = sys.argv[1], sys.argv[2]
     p_head, _, p_rows, _, p_sections = split(open(partial_path).read())
     head, header, rows, intro, sections = split(open(full_path).read())
-    fresh = {cells(r)[0]: r for r in p_rows if cells(r)[3] != 'not measured yet'}
+    before = {cells(r)[0]: cells(r)[3] for r in rows}
+    # Measured rows, and rows of scenes that parse now but did not before (a new feature):
+    # they become "not measured yet" until a run measures them.
+    fresh = {cells(r)[0]: r for r in p_rows
+             if cells(r)[3] != 'not measured yet' or before.get(cells(r)[0]) == 'does not parse'}
     rows = [fresh.get(cells(r)[0], r) for r in rows]
     gallery_dir = os.path.splitext(full_path)[0]
     partial_gallery = os.path.splitext(partial_path)[0]
@@ -102,9 +106,13 @@ def main():
     reasons = known_reasons()
     rows = [explain(r, sections, reasons) for r in rows]
     table_start = head.index('| | scenes |')
-    table_end = head.index('\n\n', table_start)
+    # The table ends at the first line that is not a table row.
+    table_end = table_start
+    while head.startswith('|', table_end):
+        table_end = head.index('\n', table_end) + 1
+    table_end -= 1
     head = head[:table_start] + counts(rows).rstrip('\n') + head[table_end:]
-    measured = {s for s in fresh if cells(fresh[s])[3] != 'does not parse'}
+    measured = {s for s in fresh if cells(fresh[s])[3] not in ('does not parse', 'not measured yet')}
     # Earlier merges' scenes stay named.
     earlier = re.search(r'\nRe-measured after fixes[^:]*: ([^\n]*)\.\n', head)
     if earlier:
