@@ -1,6 +1,7 @@
 //! Rendering: the sampler, the integrator, lights, the film, and the one loop that owns
 //! tiles, threads and progress.
 
+pub mod camera;
 pub mod dimensions;
 pub mod film;
 pub mod fog;
@@ -24,9 +25,8 @@ pub use prepared::PreparedScene;
 pub use sampler::PixelSampler;
 
 use crate::geometry::Ray;
-use crate::scene::Camera;
+pub use camera::camera_ray;
 use dimensions::Purpose;
-use sampler::concentric_disc;
 
 const TILE: usize = 16;
 
@@ -130,35 +130,6 @@ impl std::fmt::Display for RenderError {
 }
 
 impl std::error::Error for RenderError {}
-
-/// The primary ray through screen point (x, y) in [-1/2, 1/2]^2, y up, leaving the lens at
-/// `lens` in [0, 1)^2 (ignored for a pinhole camera). With focal blur, every ray through the
-/// same screen point meets the others on the plane through the focal point, perpendicular
-/// to the viewing direction.
-pub fn camera_ray(camera: &Camera, x: f64, y: f64, lens: (f64, f64)) -> Ray {
-    if camera.orthographic {
-        let origin = camera.location + camera.right * x + camera.up * y;
-        return Ray::new(origin, camera.direction.normalize_or(DVec3::Z));
-    }
-    let dir = camera.direction + camera.right * x + camera.up * y;
-    if camera.aperture <= 0.0 {
-        return Ray::new(camera.location, dir.normalize_or(DVec3::Z));
-    }
-    let forward = camera.direction.normalize_or(DVec3::Z);
-    let focus_distance = (camera.focal_point - camera.location).dot(forward);
-    let along = dir.dot(forward);
-    if focus_distance <= 0.0 || along <= 0.0 {
-        return Ray::new(camera.location, dir.normalize_or(DVec3::Z));
-    }
-    let focus = camera.location + dir * (focus_distance / along);
-    let (dx, dy) = concentric_disc(lens.0, lens.1);
-    // Measured against POV-Ray 3.7: its blur matches a uniform lens of radius aperture/4.
-    let radius = 0.25 * camera.aperture;
-    let origin = camera.location
-        + camera.right.normalize_or(DVec3::X) * (dx * radius)
-        + camera.up.normalize_or(DVec3::Y) * (dy * radius);
-    Ray::new(origin, (focus - origin).normalize_or(DVec3::Z))
-}
 
 /// Renders into a film. Each pixel's samples are taken in index order by one thread, and
 /// tiles are written back in a fixed order, so the result is the same for any thread count.
@@ -417,7 +388,7 @@ fn sample_camera_ray(
     layout: &dimensions::DimensionLayout,
     (x, y, w, h): (usize, usize, usize, usize),
     sampler: &mut PixelSampler,
-) -> Ray {
+) -> Option<Ray> {
     sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
     let (u, v) = sampler.get_2d();
     let sx = (x as f64 + u) / w as f64 - 0.5;
@@ -500,8 +471,11 @@ fn render_pass(
                 let mut square = 0.0;
                 for index in range {
                     sampler.start(x as u32, y as u32, index, seed);
-                    let ray = sample_camera_ray(scene, &layout, (x, y, w, h), &mut sampler);
-                    let l = integrator.radiance(&ray, &mut sampler, &mut counts);
+                    // No ray (outside a fisheye's circle): black, as POV-Ray renders it.
+                    let l = sample_camera_ray(scene, &layout, (x, y, w, h), &mut sampler)
+                        .map_or(DVec3::ZERO, |ray| {
+                            integrator.radiance(&ray, &mut sampler, &mut counts)
+                        });
                     if l.is_finite() {
                         sum.add(l.to_array());
                         let y = (l.x + l.y + l.z) / 3.0;

@@ -13,8 +13,50 @@ pub struct Camera {
     /// Focal blur: lens diameter (0: a pinhole) and the point that is in focus.
     pub aperture: f64,
     pub focal_point: DVec3,
+    pub projection: Projection,
+    /// The projection's horizontal and vertical angles in degrees (defaults resolved).
+    pub angles: (f64, f64),
+}
+
+/// How screen points become rays (src/render/camera.rs has the formulas, measured with
+/// POV-Ray 3.7).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Projection {
+    #[default]
+    Perspective,
     /// Parallel rays along `direction` from points of the `right` x `up` rectangle.
-    pub orthographic: bool,
+    Orthographic,
+    Fisheye,
+    UltraWideAngle,
+    Panoramic,
+    /// `cylinder 1..4`: vertical or horizontal, from a fixed point or a moving one.
+    Cylinder(u8),
+    Spherical,
+}
+
+impl Projection {
+    /// Perspective and orthographic cameras turn `angle` into the direction's length; the
+    /// others read it as their own angle and leave the vectors as written (measured:
+    /// panoramic ignores `angle` and uses the lengths of direction and right).
+    fn angle_sets_direction(self) -> bool {
+        matches!(self, Projection::Perspective | Projection::Orthographic)
+    }
+
+    /// The angles when the camera gives none (measured: 90 for fisheye, ultra_wide_angle
+    /// and the cylinders; 360 x 180 for spherical, whose vertical angle is otherwise half
+    /// the horizontal one).
+    fn angles(self, angle: Option<f64>, vertical: Option<f64>) -> (f64, f64) {
+        match self {
+            Projection::Spherical => {
+                let h = angle.unwrap_or(360.0);
+                (h, vertical.unwrap_or(h / 2.0))
+            }
+            _ => {
+                let h = angle.unwrap_or(90.0);
+                (h, h)
+            }
+        }
+    }
 }
 
 impl Default for Camera {
@@ -40,7 +82,9 @@ pub struct CameraSpec {
     pub focal_point: DVec3,
     /// POV-Ray's rays per pixel for blur; penumbra's lens samples are the pixel's samples.
     pub blur_samples: u32,
-    pub orthographic: bool,
+    pub projection: Projection,
+    /// Spherical's vertical angle (`angle h, v`).
+    pub vertical_angle: Option<f64>,
     /// Whether the camera block wrote `up` or `right`: without them (or with `angle`) an
     /// orthographic camera takes its size from the distance to `look_at`.
     pub up_or_right_given: bool,
@@ -60,7 +104,8 @@ impl Default for CameraSpec {
             aperture: 0.0,
             focal_point: DVec3::ZERO,
             blur_samples: 0,
-            orthographic: false,
+            projection: Projection::Perspective,
+            vertical_angle: None,
             up_or_right_given: false,
             transform: Transform::IDENTITY,
         }
@@ -72,7 +117,10 @@ impl CameraSpec {
         let mut direction = self.direction;
         let mut right = self.right;
         let mut up = self.up;
-        if let Some(angle) = self.angle {
+        let angle = self
+            .angle
+            .filter(|_| self.projection.angle_sets_direction());
+        if let Some(angle) = angle {
             let half = (angle.to_radians() * 0.5).tan();
             if half > 0.0 && half.is_finite() {
                 direction = direction.normalize_or(DVec3::Z) * (0.5 * right.length() / half);
@@ -97,7 +145,9 @@ impl CameraSpec {
             right = r * if handedness <= 0.0 { -rl } else { rl };
             up = u * ul;
         }
-        if self.orthographic && (self.angle.is_some() || !self.up_or_right_given) {
+        if self.projection == Projection::Orthographic
+            && (self.angle.is_some() || !self.up_or_right_given)
+        {
             // POV-Ray's documented second orthographic mode: the same image area as the
             // perspective camera would show at the look_at distance. Measured with POV-Ray
             // 3.7: the width is |right| * distance / |direction| (2 distance tan(angle / 2)
@@ -119,7 +169,8 @@ impl CameraSpec {
             up: t.vector(up),
             aperture: self.aperture,
             focal_point: t.point(self.focal_point),
-            orthographic: self.orthographic,
+            projection: self.projection,
+            angles: self.projection.angles(self.angle, self.vertical_angle),
         }
     }
 }

@@ -13,7 +13,7 @@ pub mod spline;
 pub mod text;
 mod texture;
 
-pub use camera::{Camera, CameraSpec};
+pub use camera::{Camera, CameraSpec, Projection};
 pub use fog::{Fog, FogKind, FogTurbulence};
 pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, Light, LightKind};

@@ -7,7 +7,7 @@ use super::super::diagnostics::Diagnostic;
 use super::super::syntax::{Punct, Token, TokenKind};
 use super::Evaluator;
 use super::value::{ObjectValue, Value, transform_light};
-use crate::scene::{AreaLight, CameraSpec, Light, LightKind};
+use crate::scene::{AreaLight, CameraSpec, Light, LightKind, Projection};
 
 type R<T> = Result<T, Diagnostic>;
 
@@ -294,13 +294,29 @@ impl Evaluator<'_> {
                     return Err(ev.stray_in_block(tok, "the camera"));
                 };
                 match word {
-                    "perspective" => {
+                    "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle"
+                    | "panoramic" | "spherical" => {
+                        let word = word.to_string();
                         ev.next()?;
-                        spec.orthographic = false;
+                        spec.projection = match word.as_str() {
+                            "perspective" => Projection::Perspective,
+                            "orthographic" => Projection::Orthographic,
+                            "fisheye" => Projection::Fisheye,
+                            "ultra_wide_angle" => Projection::UltraWideAngle,
+                            "panoramic" => Projection::Panoramic,
+                            _ => Projection::Spherical,
+                        };
                     }
-                    "orthographic" => {
-                        ev.next()?;
-                        spec.orthographic = true;
+                    "cylinder" => {
+                        let tok = ev.next()?;
+                        let kind = ev.float()?;
+                        if ![1.0, 2.0, 3.0, 4.0].contains(&kind) {
+                            return Err(ev.err(
+                                tok.span,
+                                format!("cylinder camera type {kind} is not 1, 2, 3 or 4"),
+                            ));
+                        }
+                        spec.projection = Projection::Cylinder(kind as u8);
                     }
                     "location" | "look_at" | "right" | "up" | "direction" | "sky" => {
                         let word = word.to_string();
@@ -324,6 +340,10 @@ impl Evaluator<'_> {
                     "angle" => {
                         ev.next()?;
                         spec.angle = Some(ev.float()?);
+                        // `angle h, v` (spherical).
+                        if ev.eat(Punct::Comma)? {
+                            spec.vertical_angle = Some(ev.float()?);
+                        }
                     }
                     "aperture" => {
                         ev.next()?;
@@ -347,8 +367,7 @@ impl Evaluator<'_> {
                         ev.next()?;
                         ev.float()?;
                     }
-                    "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
-                    | "cylinder" | "mesh_camera" | "normal" => {
+                    "omnimax" | "mesh_camera" | "normal" => {
                         let word = word.to_string();
                         ev.unsupported_or_skip(tok, &word)?;
                     }
