@@ -49,6 +49,37 @@ fn texture_map_entries_are_texture_bodies() {
     assert!((c - DVec3::new(0.5, 0.0, 0.5)).length() < 1e-4, "{c}");
 }
 
+#[test]
+fn list_patterns_take_texture_entries() {
+    let s = load(
+        "#version 3.7;\n#declare Red = texture { pigment { rgb <1,0,0> } finish { phong 1 } }\n\
+         plane { y, 0 texture { checker texture { Red } texture { pigment { rgb <0,0,1> } } } }\n\
+         plane { y, 0 texture { hexagon texture { Red } } }",
+    );
+    let colour = |object: usize, p: DVec3| {
+        let t = s.objects[object].texture.as_ref().expect("texture");
+        texture_layers(t, p)
+            .iter()
+            .next()
+            .expect("a layer")
+            .colour
+            .rgb
+    };
+    // Checker: the cube at the origin takes the first entry, its neighbour the second.
+    assert_eq!(
+        colour(0, DVec3::new(0.5, 0.5, 0.5)),
+        DVec3::new(1.0, 0.0, 0.0)
+    );
+    assert_eq!(
+        colour(0, DVec3::new(1.5, 0.5, 0.5)),
+        DVec3::new(0.0, 0.0, 1.0)
+    );
+    // Hexagon with one entry: the other two take the default texture (pigment black).
+    assert_eq!(colour(1, DVec3::ZERO), DVec3::new(1.0, 0.0, 0.0));
+    let others = colour(1, DVec3::new(1.0, 0.0, 0.2));
+    assert_eq!(others, DVec3::ZERO, "{others}");
+}
+
 /// tests/lang/textures/normal_amounts.pov checks the amounts the normals read.
 #[test]
 fn a_gradient_normal_tilts_the_normal() {

@@ -1068,6 +1068,9 @@ impl Evaluator<'_> {
                     self.next()?;
                     uv_mapping = true;
                 }
+                "texture" if t.map.as_ref().is_some_and(|m| m.entries.is_empty()) => {
+                    self.texture_list_entries(&mut t, &tok)?;
+                }
                 "material_map" | "image_map" => {
                     return Err(self.unsupported(&tok, &word));
                 }
@@ -1099,6 +1102,41 @@ impl Evaluator<'_> {
                 },
             }
         }
+    }
+}
+
+impl Evaluator<'_> {
+    /// `texture { checker texture {A} texture {B} }`: the entries of a list pattern, one
+    /// texture per index (the pattern's value), as a texture map with entries at 0, 1, ...
+    fn texture_list_entries(
+        &mut self,
+        t: &mut Texture,
+        tok: &super::super::syntax::Token,
+    ) -> R<()> {
+        let Some(map) = &mut t.map else {
+            return Err(self.stray_in_block(tok, "the texture"));
+        };
+        let Some(n) = map.pattern.kind.list_size() else {
+            return Err(self.err(
+                tok.span,
+                "texture entries follow only checker, hexagon or brick; use a texture_map",
+            ));
+        };
+        let mut entries = Vec::with_capacity(n);
+        while entries.len() < n && self.peek()?.is_ident("texture") {
+            self.next()?;
+            let entry = self.texture_body(self.default_texture.clone())?;
+            entries.push((entries.len() as f64, entry));
+            self.eat(Punct::Comma)?;
+        }
+        // Entries left out take the default texture, as POV-Ray's do.
+        while entries.len() < n {
+            entries.push((entries.len() as f64, self.default_texture.clone()));
+        }
+        if let Some(map) = &mut t.map {
+            map.entries = entries;
+        }
+        Ok(())
     }
 }
 
