@@ -6,8 +6,8 @@ scenes it touches without a whole sweep (about 90 minutes):
     tests/corpus/merge-rerun.py /tmp/rerun/corpus.md docs/corpus.md
 
 Every scene the partial run measured replaces its row and its gallery entry (and image) in
-the full report; a failure whose scene has since been given a reason in
-tests/corpus/known-differences.txt takes it; the counts are recomputed from the rows with the
+the full report, and its account of how scenes are judged replaces the old one; a failure
+whose scene has since been given a reason in tests/corpus/known-differences.txt takes it; the counts are recomputed from the rows with the
 rules of src/study/corpus/report.rs; the header says which scenes were re-measured.
 """
 import os, re, shutil, sys
@@ -103,6 +103,10 @@ def main():
             sections[scene] = p_sections[scene]
             os.makedirs(gallery_dir, exist_ok=True)
             shutil.copy(os.path.join(partial_gallery, flat), os.path.join(gallery_dir, flat))
+    # The partial run's binary is the newer one: its account of the tests replaces the old.
+    if '## How a scene is judged' in p_head and '## How a scene is judged' in head:
+        method = p_head[p_head.index('## How a scene is judged'):]
+        head = head[:head.index('## How a scene is judged')] + method
     reasons = known_reasons()
     rows = [explain(r, sections, reasons) for r in rows]
     table_start = head.index('| | scenes |')
