@@ -72,6 +72,12 @@ def known_reasons():
 def explain(row, sections, reasons):
     """A failure without a reason takes the one written down since."""
     c = cells(row)
+    if c[3] in ('POV-Ray failed', 'penumbra failed') and c[0] in reasons:
+        # Not judged: the reason says why, and the row stays counted as it is.
+        reason = reasons[c[0]].replace('|', '\\|')
+        if not c[4].startswith(reason):
+            c[4] = reason + '; ' + c[4]
+        return '| ' + ' | '.join(c) + ' |'
     if c[3] != '**FAIL**' or c[0] not in reasons:
         return row
     reason = reasons[c[0]].replace('|', '\\|')
