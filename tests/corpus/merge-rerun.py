@@ -25,7 +25,7 @@ def split(text):
 def cells(row):
     return [c.strip() for c in re.split(r'(?<!\\)\|', row)[1:-1]]
 
-def counts(rows):
+def counts(rows, reasons):
     c = {k: 0 for k in ['scenes', 'parse', 'render', 'pp', 'pd', 'fp', 'fd', 'known',
                         'unexplained', 'pfail', 'rfail', 'notyet']}
     for r in rows:
@@ -46,8 +46,8 @@ def counts(rows):
             c['unexplained'] += 1
         if result == 'penumbra failed':
             c['pfail'] += 1
-            # A failed render counts as a failure, explained or not, as the report counts it.
-            c['unexplained'] += 1
+            # A failed render counts as a failure, explained when its reason is written down.
+            c['known' if scene in reasons else 'unexplained'] += 1
         if result == 'POV-Ray failed':
             c['rfail'] += 1
         if result == 'not measured yet':
@@ -121,7 +121,7 @@ def main():
     while head.startswith('|', table_end):
         table_end = head.index('\n', table_end) + 1
     table_end -= 1
-    head = head[:table_start] + counts(rows).rstrip('\n') + head[table_end:]
+    head = head[:table_start] + counts(rows, reasons).rstrip('\n') + head[table_end:]
     measured = {s for s in fresh if cells(fresh[s])[3] not in ('does not parse', 'not measured yet')}
     # Earlier merges' scenes stay named.
     earlier = re.search(r'\nRe-measured after fixes[^:]*: ([^\n]*)\.\n', head)
