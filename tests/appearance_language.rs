@@ -80,6 +80,36 @@ fn list_patterns_take_texture_entries() {
     assert_eq!(others, DVec3::ZERO, "{others}");
 }
 
+#[test]
+fn average_weighs_its_pigment_map_entries() {
+    let s = load(
+        "#version 3.7;\n\
+         plane { y, 0 pigment { average pigment_map { [1 rgb <1,0,0>] [3 rgbt <0,0,1,1>] } } }\n\
+         plane { y, 0 pigment { average pigment_map { [gradient x] [rgb 1] } } }",
+    );
+    let colour = |object: usize, p: DVec3| {
+        let t = s.objects[object].texture.as_ref().expect("texture");
+        texture_layers(t, p).iter().next().expect("a layer").colour
+    };
+    let c = colour(0, DVec3::ZERO);
+    assert_eq!(c.rgb, DVec3::new(0.25, 0.0, 0.75));
+    assert_eq!(c.transmit, 0.75);
+    // Without weights every entry counts once: gradient x at x = 0.5 reads grey 0.5.
+    let g = colour(1, DVec3::new(0.5, 0.0, 0.0)).rgb;
+    assert!((g - DVec3::splat(0.75)).length() < 1e-12, "{g}");
+}
+
+#[test]
+fn average_without_a_pigment_map_is_an_error() {
+    let options = LoadOptions::default();
+    let source = "#version 3.7;\nplane { y, 0 pigment { average } }";
+    let error = load_scene_source("test.pov", source, &options).expect_err("refused");
+    assert!(
+        error.to_string().contains("`average` needs a pigment_map"),
+        "{error}"
+    );
+}
+
 /// tests/lang/textures/normal_amounts.pov checks the amounts the normals read.
 #[test]
 fn a_gradient_normal_tilts_the_normal() {

@@ -210,6 +210,8 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
         PatternKind::Cylindrical => 1.0 - p.x.hypot(p.z).min(1.0),
         PatternKind::Boxed => 1.0 - p.abs().max_element().min(1.0),
         PatternKind::Crackle(c) => super::crackle::crackle_value(c, p, pattern.noise_generator),
+        // Only a pigment_map reads `average`, and it averages its entries instead.
+        PatternKind::Average => 0.0,
         PatternKind::DensityFile(grid) => voxel_value(grid, p),
         PatternKind::PigmentPattern(pig) => {
             let c = super::pigment::evaluate_pigment(pig, p);

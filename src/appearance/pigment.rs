@@ -5,13 +5,34 @@ use super::pattern::{pattern_index, pattern_value, warp_chain};
 use std::f64::consts::{PI, TAU};
 
 use crate::geometry::TexturePoint;
-use crate::scene::{Colour, ImageMap, MapType, Pigment, PigmentKind};
+use crate::scene::{Colour, ImageMap, MapType, PatternKind, Pigment, PigmentKind};
 
 /// The pigment's colour at a point: a world-space point, or a surface point that also
 /// carries the surface's (u, v) for pigments with `uv_mapping`.
 pub fn evaluate_pigment(pigment: &Pigment, at: impl Into<TexturePoint>) -> Colour {
     let at = at.into();
     pigment_at(pigment, at.world, at.uv)
+}
+
+/// `average pigment_map { [w1 P1] [w2 P2] ... }`: (w1 P1 + w2 P2 + ...) / (w1 + w2 + ...),
+/// every channel (filter and transmit too).
+fn average(map: &[(f64, Pigment)], world: DVec3, uv: DVec2) -> Colour {
+    let total: f64 = map.iter().map(|e| e.0).sum();
+    if map.is_empty() || total == 0.0 {
+        return Colour::BLACK;
+    }
+    let mut sum = Colour::BLACK;
+    for (w, p) in map {
+        let c = pigment_at(p, world, uv);
+        sum.rgb += c.rgb * *w;
+        sum.filter += c.filter * w;
+        sum.transmit += c.transmit * w;
+    }
+    Colour {
+        rgb: sum.rgb / total,
+        filter: sum.filter / total,
+        transmit: sum.transmit / total,
+    }
 }
 
 fn pigment_at(pigment: &Pigment, world: DVec3, uv: DVec2) -> Colour {
@@ -43,6 +64,11 @@ fn pigment_at(pigment: &Pigment, world: DVec3, uv: DVec2) -> Colour {
         PigmentKind::Image(im) => {
             let p = pigment.transform.inverse_point(world);
             image_colour(im, warp_chain(&im.warps, im.turbulence.as_ref(), p))
+        }
+        PigmentKind::PigmentMap { pattern, map }
+            if matches!(pattern.kind, PatternKind::Average) =>
+        {
+            average(map, world, uv)
         }
         PigmentKind::PigmentMap { pattern, map } => {
             let p = pigment.transform.inverse_point(world);

@@ -138,6 +138,9 @@ pub enum PatternKind {
     Cylindrical,
     Boxed,
     Crackle(Crackle),
+    /// `average`: no value of its own; a pigment_map's entries are averaged, weighted by
+    /// their map values (read only with a pigment_map).
+    Average,
     /// `density_file df3 "file" [interpolate k]`: a voxel grid over the unit cube.
     DensityFile(std::sync::Arc<VoxelGrid>),
     /// `function { ... }`: the function's value at the point, wrapped as gradient's is.

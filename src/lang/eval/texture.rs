@@ -19,7 +19,6 @@ type R<T> = Result<T, Diagnostic>;
 /// Pattern keywords POV-Ray has that penumbra does not model yet.
 const UNSUPPORTED_PATTERNS: &[&str] = &[
     "aoi",
-    "average",
     "cells",
     "facets",
     "image_pattern",
@@ -41,6 +40,7 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
 const PATTERNS: &[&str] = &[
     "density_file",
     "crackle",
+    "average",
     "checker",
     "hexagon",
     "brick",
@@ -222,7 +222,12 @@ impl Evaluator<'_> {
         let r = self.pigment_items(base, Punct::RBrace);
         self.leave();
         let p = r?;
-        self.expect(Punct::RBrace, "to close the pigment")?;
+        let close = self.expect(Punct::RBrace, "to close the pigment")?;
+        if let PigmentKind::ColourMap { pattern, .. } = &p.kind
+            && matches!(pattern.kind, PatternKind::Average)
+        {
+            return Err(self.err(close.span, "`average` needs a pigment_map"));
+        }
         Ok(p)
     }
 
@@ -280,7 +285,10 @@ impl Evaluator<'_> {
                 }
                 Some(w) if w == self.pigment_map_word() => {
                     self.next()?;
-                    let mut map = self.pigment_map_body()?;
+                    let average = p
+                        .pattern_mut()
+                        .is_some_and(|x| matches!(x.kind, PatternKind::Average));
+                    let mut map = self.pigment_map_body(average)?;
                     let t = p.transform;
                     for (_, e) in &mut map {
                         e.transform_by(&t);
@@ -371,6 +379,7 @@ impl Evaluator<'_> {
             "cylindrical" => PatternKind::Cylindrical,
             "boxed" => PatternKind::Boxed,
             "crackle" => PatternKind::Crackle(Crackle::default()),
+            "average" => PatternKind::Average,
             "density_file" => PatternKind::DensityFile(std::sync::Arc::new(self.density_file()?)),
             "function" => {
                 let span = self.peek()?.span;
@@ -620,13 +629,19 @@ impl Evaluator<'_> {
     }
 
     /// `{ [v pigment {...}] ... }` after `pigment_map`.
-    fn pigment_map_body(&mut self) -> R<Vec<(f64, Pigment)>> {
+    /// `{ [v pigment] ... }` after `pigment_map`; under `average` the weight v may be left
+    /// out (it is then 1, as POV-Ray's).
+    fn pigment_map_body(&mut self, average: bool) -> R<Vec<(f64, Pigment)>> {
         self.read_map_entries(
             "pigment_map",
             "pigment map",
             |_| Ok(Vec::new()),
             |ev, map| {
-                let v = ev.float()?;
+                let v = if average && !ev.starts_float()? {
+                    1.0
+                } else {
+                    ev.float()?
+                };
                 ev.eat(Punct::Comma)?;
                 // Entries are pigment bodies: `[0.5 checker rgb 1, rgb 0]`, `[1 Named]`.
                 let p = if ev.peek()?.is_ident(ev.pigment_word()) {
@@ -689,6 +704,7 @@ impl Evaluator<'_> {
                 return Err(self.stray_in_block(&tok, "the normal"));
             };
             match word.as_str() {
+                "average" => return Err(self.unsupported(&tok, "average normal_map")),
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
@@ -1054,6 +1070,7 @@ impl Evaluator<'_> {
                     };
                     map.entries = entries;
                 }
+                "average" => return Err(self.unsupported(&tok, "average texture_map")),
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
