@@ -7,6 +7,7 @@ use penumbra::lang::{LoadOptions, load_scene, load_scene_source};
 use penumbra::output::Image;
 use penumbra::render::{AreaLightMode, RenderOptions};
 use penumbra::scene::Scene;
+use penumbra::study::distribution::erfc;
 use penumbra::study::{self, SQRT_B_THRESHOLD};
 
 const Z_STAR: f64 = 4.78;
@@ -99,24 +100,6 @@ fn tile_stats(images: &[Image], x0: usize, y0: usize, size: usize) -> (f64, f64)
 fn chi_square_upper_tail(x: f64, m: f64) -> f64 {
     let z = ((x / m).powf(1.0 / 3.0) - (1.0 - 2.0 / (9.0 * m))) / (2.0 / (9.0 * m)).sqrt();
     0.5 * erfc(z / std::f64::consts::SQRT_2)
-}
-
-fn erfc(x: f64) -> f64 {
-    // Numerical Recipes' erfc approximation (fractional error below 1.2e-7).
-    let z = x.abs();
-    let t = 1.0 / (1.0 + 0.5 * z);
-    let r = t
-        * (-z * z - 1.265_512_23
-            + t * (1.000_023_68
-                + t * (0.374_091_96
-                    + t * (0.096_784_18
-                        + t * (-0.186_288_06
-                            + t * (0.278_868_07
-                                + t * (-1.135_203_98
-                                    + t * (1.488_515_87
-                                        + t * (-0.822_152_23 + t * 0.170_872_77)))))))))
-            .exp();
-    if x >= 0.0 { r } else { 2.0 - r }
 }
 
 /// Russian roulette keeps the expectation: replicates with it on and off agree tile by

@@ -22,6 +22,7 @@
 use super::judge::{DIST_ABS_TOLERANCE, DIST_BLOCK, DIST_REL_TOLERANCE, DistributionVerdict};
 use super::judge::{DistributionFailure, sample_variance};
 use crate::output::Image;
+use crate::study::distribution::student_critical;
 use crate::study::{Reference, StudyError};
 
 /// Noise phases per scene.
@@ -116,25 +117,14 @@ fn record_spread(
     let n = s.x.len() as f64;
     let floor = (DIST_ABS_TOLERANCE * blocks).powi(2);
     let (vx, vr) = (sample_variance(&s.x) + floor, sample_variance(&s.r) + floor);
-    let d = (vx / vr).ln();
-    let threshold = student_critical(ALPHA, tests, f64::INFINITY) * (4.0 / (n - 1.0)).sqrt();
-    let ratio = d.abs() / threshold;
-    verdict.tested += 1;
-    verdict.worst_ratio = if ratio.is_finite() {
-        verdict.worst_ratio.max(ratio)
-    } else {
-        f64::INFINITY
-    };
-    if d.is_nan() || d.abs() > threshold {
-        verdict.failures.push(DistributionFailure {
-            block: None,
-            channel,
-            statistic: "phase spread (ln variance ratio)",
-            d,
-            threshold,
-            reference: vr.sqrt(),
-        });
-    }
+    verdict.check(DistributionFailure {
+        block: None,
+        channel,
+        statistic: "phase spread (ln variance ratio)",
+        d: (vx / vr).ln(),
+        threshold: student_critical(ALPHA, tests, f64::INFINITY) * (4.0 / (n - 1.0)).sqrt(),
+        reference: vr.sqrt(),
+    });
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -242,23 +232,14 @@ fn record(
     let threshold = DIST_ABS_TOLERANCE * blocks
         + DIST_REL_TOLERANCE * reference.abs()
         + student_critical(ALPHA, tests, welch_df(vx, vr, n)) * se;
-    let ratio = d.abs() / threshold;
-    verdict.tested += 1;
-    verdict.worst_ratio = if ratio.is_finite() {
-        verdict.worst_ratio.max(ratio)
-    } else {
-        f64::INFINITY
-    };
-    if d.is_nan() || threshold.is_nan() || d.abs() > threshold {
-        verdict.failures.push(DistributionFailure {
-            block,
-            channel,
-            statistic: "phase mean",
-            d,
-            threshold,
-            reference,
-        });
-    }
+    verdict.check(DistributionFailure {
+        block,
+        channel,
+        statistic: "phase mean",
+        d,
+        threshold,
+        reference,
+    });
 }
 
 /// Welch-Satterthwaite degrees of freedom of vx + vr (each a variance of a mean of n), at
@@ -270,51 +251,6 @@ fn welch_df(vx: f64, vr: f64, n: f64) -> f64 {
     } else {
         n - 1.0
     }
-}
-
-/// Two-sided Student t critical value for a family-wise level `alpha` over `tests` tests
-/// (Sidak), at `df` degrees of freedom: the normal quantile corrected by the Cornish-Fisher
-/// expansion of t in 1/df (Abramowitz & Stegun 26.7.5), within 1% of t for df >= 10 at
-/// these levels.
-pub fn student_critical(alpha: f64, tests: usize, df: f64) -> f64 {
-    let per_test = 1.0 - (1.0 - alpha).powf(1.0 / tests as f64);
-    let z = normal_quantile(1.0 - per_test / 2.0);
-    let (z3, z5, z7, z9) = (z.powi(3), z.powi(5), z.powi(7), z.powi(9));
-    z + (z3 + z) / (4.0 * df)
-        + (5.0 * z5 + 16.0 * z3 + 3.0 * z) / (96.0 * df * df)
-        + (3.0 * z7 + 19.0 * z5 + 17.0 * z3 - 15.0 * z) / (384.0 * df.powi(3))
-        + (79.0 * z9 + 776.0 * z7 + 1482.0 * z5 - 1920.0 * z3 - 945.0 * z) / (92160.0 * df.powi(4))
-}
-
-/// The standard normal quantile, by bisection of erfc (exact enough for critical values).
-fn normal_quantile(p: f64) -> f64 {
-    let (mut lo, mut hi) = (-10.0f64, 10.0f64);
-    for _ in 0..100 {
-        let mid = 0.5 * (lo + hi);
-        if 1.0 - 0.5 * erfc(mid / std::f64::consts::SQRT_2) < p {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
-/// erfc by its continued-fraction-free Chebyshev fit (Numerical Recipes' erfcc, relative
-/// error below 1.2e-7 everywhere).
-fn erfc(x: f64) -> f64 {
-    let z = x.abs();
-    let t = 1.0 / (1.0 + 0.5 * z);
-    let poly = -z * z - 1.265_512_23
-        + t * (1.000_023_68
-            + t * (0.374_091_96
-                + t * (0.096_784_18
-                    + t * (-0.186_288_06
-                        + t * (0.278_868_07
-                            + t * (-1.135_203_98
-                                + t * (1.488_515_87 + t * (-0.822_152_23 + t * 0.170_872_77))))))));
-    let r = t * poly.exp();
-    if x >= 0.0 { r } else { 2.0 - r }
 }
 
 #[cfg(test)]
@@ -406,17 +342,6 @@ mod tests {
         assert!(ensemble_test(&penumbra(2, 0.0, 1.0)[..3], &povray).is_err());
         let small = vec![Image::from_fn(80, 60, |_, _| [0.0; 3]); PHASES];
         assert!(ensemble_test(&small, &povray).is_err());
-    }
-
-    #[test]
-    fn critical_values_are_students() {
-        // Tables: t(0.975; 10) = 2.2281, t(0.995; 20) = 2.8453, z(0.975) = 1.95996.
-        assert!((student_critical(0.05, 1, 10.0) - 2.2281).abs() < 0.01);
-        assert!((student_critical(0.01, 1, 20.0) - 2.8453).abs() < 0.005);
-        assert!((student_critical(0.05, 1, 1e9) - 1.95996).abs() < 1e-4);
-        // Sidak over 39 tests at 1e-3 with df = 15: wider than the normal's 4.2.
-        let t = student_critical(1e-3, 39, 15.0);
-        assert!(t > 4.3 && t < 7.0, "{t}");
     }
 
     #[test]

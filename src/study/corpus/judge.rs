@@ -93,6 +93,21 @@ impl DistributionVerdict {
     pub fn passes(&self) -> bool {
         self.tested > 0 && self.failures.is_empty() && self.worst_ratio.is_finite()
     }
+
+    /// Counts one test, |d| against its threshold, and keeps it when it fails (or when
+    /// either is not a number).
+    pub fn check(&mut self, test: DistributionFailure) {
+        let ratio = test.d.abs() / test.threshold;
+        self.tested += 1;
+        self.worst_ratio = if ratio.is_finite() {
+            self.worst_ratio.max(ratio)
+        } else {
+            f64::INFINITY
+        };
+        if test.d.is_nan() || test.threshold.is_nan() || test.d.abs() > test.threshold {
+            self.failures.push(test);
+        }
+    }
 }
 
 impl fmt::Display for DistributionVerdict {
@@ -405,24 +420,12 @@ fn record(
     statistic: &'static str,
     t: &Term,
 ) {
-    let threshold = t.tolerance + DIST_Z * t.variance.sqrt();
-    let ratio = t.d.abs() / threshold;
-    verdict.tested += 1;
-    if !ratio.is_finite() || ratio > verdict.worst_ratio {
-        verdict.worst_ratio = if ratio.is_finite() {
-            ratio
-        } else {
-            f64::INFINITY
-        };
-    }
-    if t.d.is_nan() || threshold.is_nan() || t.d.abs() > threshold {
-        verdict.failures.push(DistributionFailure {
-            block,
-            channel,
-            statistic,
-            d: t.d,
-            threshold,
-            reference: t.reference,
-        });
-    }
+    verdict.check(DistributionFailure {
+        block,
+        channel,
+        statistic,
+        d: t.d,
+        threshold: t.tolerance + DIST_Z * t.variance.sqrt(),
+        reference: t.reference,
+    });
 }
