@@ -167,27 +167,27 @@ const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
     }),
     ("form", |ev, p| {
         let v = ev.vector3()?;
-        if let PatternKind::Crackle(c) = &mut p.kind {
+        if let Some(c) = crackle(p) {
             c.form = v;
         }
         Ok(())
     }),
     ("metric", |ev, p| {
         let m = ev.float()?;
-        if let PatternKind::Crackle(c) = &mut p.kind {
+        if let Some(c) = crackle(p) {
             c.metric = m;
         }
         Ok(())
     }),
     ("offset", |ev, p| {
         let o = ev.float()?;
-        if let PatternKind::Crackle(c) = &mut p.kind {
+        if let Some(c) = crackle(p) {
             c.offset = o;
         }
         Ok(())
     }),
     ("solid", |_, p| {
-        if let PatternKind::Crackle(c) = &mut p.kind {
+        if let Some(c) = crackle(p) {
             c.solid = true;
         }
         Ok(())
@@ -200,6 +200,14 @@ const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
         Ok(())
     }),
 ];
+
+/// The crackle settings a modifier changes; other patterns ignore crackle's modifiers.
+fn crackle(p: &mut Pattern) -> Option<&mut Crackle> {
+    match &mut p.kind {
+        PatternKind::Crackle(c) => Some(c),
+        _ => None,
+    }
+}
 
 enum Modified<'a> {
     Pigment(&'a mut Pigment),
