@@ -33,7 +33,7 @@ cm = by.get(("ConfigMap", "penumbra-render"))
 need(cm, "no ConfigMap penumbra-render")
 need(("PersistentVolumeClaim", "penumbra-farm") in by, "no PersistentVolumeClaim penumbra-farm")
 data = cm["data"]
-for key in ["SCENE", "OUT_DIR", "WIDTH", "HEIGHT", "SPP", "SEED", "SHARDS", "FRAMES", "RENDER_ARGS", "IMAGE"]:
+for key in ["SCENE", "OUT_DIR", "WIDTH", "HEIGHT", "SPP", "SEED", "SHARDS", "FRAMES", "RENDER_ARGS", "IMAGE", "MERGE_ARGS"]:
     need(key in data and isinstance(data[key], str), f"ConfigMap data.{key} missing or not a string")
 shards = by.get(("Job", "penumbra-shards"))
 merge = by.get(("Job", "penumbra-merge"))
@@ -92,7 +92,7 @@ EOF
   run_case() { # frames
     local out=$tmp/run$1 k
     export SCENE=$ROOT/scenes/soft_shadow.pov OUT_DIR=$out WIDTH=64 HEIGHT=48 SPP=12 SEED=5 SHARDS=5
-    export FRAMES=$1 RENDER_ARGS="" IMAGE=image.png PATH="$tmp/bin:$PATH"
+    export FRAMES=$1 RENDER_ARGS="" MERGE_ARGS="" IMAGE=image.png PATH="$tmp/bin:$PATH"
     [ -z "$FRAMES" ] || SCENE=$ROOT/scenes/clock_animation.pov
     for ((k = 0; k < SHARDS; k++)); do
       JOB_COMPLETION_INDEX=$k /bin/sh "$tmp/penumbra-shards.sh" >/dev/null || die "shard pod script, index $k"

@@ -11,6 +11,7 @@
 #   SCENE OUT_DIR SHARDS WIDTH HEIGHT SPP SEED FRAMES RENDER_ARGS PENUMBRA THREADS
 #               as in penumbra-shards.sbatch (SCENE, OUT_DIR, SHARDS required)
 #   IMAGE       the merged image's name in OUT_DIR                 [image.png]
+#   MERGE_ARGS  more `penumbra merge` options, e.g. "--bit-depth 16" (penumbra-merge.sbatch)
 #   CPUS_PER_TASK  CPUs for each shard task                        [1]
 #   ARRAY_LIMIT    at most this many shard tasks at once (--array=0-(K-1)%LIMIT) [no limit]
 #   PARTITION   the Slurm partition                                [the cluster's default]
@@ -25,7 +26,7 @@ die() { echo "submit: $*" >&2; exit 1; }
 for arg in "$@"; do
   case "$arg" in
     SCENE=* | OUT_DIR=* | SHARDS=* | WIDTH=* | HEIGHT=* | SPP=* | SEED=* | FRAMES=* | \
-      RENDER_ARGS=* | PENUMBRA=* | THREADS=* | IMAGE=* | CPUS_PER_TASK=* | ARRAY_LIMIT=* | \
+      RENDER_ARGS=* | PENUMBRA=* | THREADS=* | IMAGE=* | MERGE_ARGS=* | CPUS_PER_TASK=* | ARRAY_LIMIT=* | \
       PARTITION=* | SBATCH_ARGS=*) export "${arg?}" ;;
     -h | --help) sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *) die "unknown argument '$arg' (expected NAME=VALUE; --help lists them)" ;;
@@ -36,7 +37,7 @@ done
 : "${OUT_DIR:?submit: OUT_DIR is not set}"
 : "${SHARDS:?submit: SHARDS is not set}"
 export WIDTH=${WIDTH:-320} HEIGHT=${HEIGHT:-240} SPP=${SPP:-16} SEED=${SEED:-0}
-export FRAMES=${FRAMES:-} RENDER_ARGS=${RENDER_ARGS:-} IMAGE=${IMAGE:-image.png}
+export FRAMES=${FRAMES:-} RENDER_ARGS=${RENDER_ARGS:-} IMAGE=${IMAGE:-image.png} MERGE_ARGS=${MERGE_ARGS:-}
 export PENUMBRA=${PENUMBRA:-penumbra}
 CPUS_PER_TASK=${CPUS_PER_TASK:-1}
 [[ $SHARDS =~ ^[1-9][0-9]*$ ]] || die "SHARDS must be a positive whole number, got '$SHARDS'"
