@@ -16,7 +16,8 @@
 #      cmp'd against the one-machine frame (FRAMES_CASE=0 leaves it out);
 #   5. case "failing shard": shards given a bad option must fail, and the merge must then be
 #      cancelled by Slurm (afterok can never be met), not left pending;
-#   6. `penumbra merge` refuses an incomplete shard set (7 of 8) and a doubled shard;
+#   6. `penumbra merge` refuses an incomplete shard set (7 of 8), a doubled shard, and a
+#      set with one shard of another seed;
 #   7. stops everything (trap on EXIT, so on failure too) and checks with pgrep that no
 #      daemon, job step or penumbra process of the test remains.
 #
@@ -453,14 +454,21 @@ say "image: 8 shards merged == one-machine render (cmp), soft_shadow 96x72 16 sp
 
 # ---------------------------------------------------------------- merge refuses a bad set
 files=("$RUN"/shards/shard-*.pshard)
-if timeout 60 "$PENUMBRA" merge "${files[@]:0:7}" -o "$TMP/bad.png" >"$TMP/bad.log" 2>&1; then
-  fail "penumbra merge accepted 7 of 8 shards (samples missing)"
-fi
-[ -s "$TMP/bad.log" ] || fail "penumbra merge refused 7 of 8 shards but said nothing"
-if timeout 60 "$PENUMBRA" merge "${files[@]}" "${files[3]}" -o "$TMP/bad.png" >"$TMP/bad.log" 2>&1; then
-  fail "penumbra merge accepted a shard given twice (overlapping samples)"
-fi
-say "merge refuses a set with a shard missing and one with a shard twice: $(head -n1 "$TMP/bad.log")"
+# refuse NAME SHARD...: penumbra merge must exit non-zero and say why
+refuse() {
+  local name=$1
+  shift
+  if timeout 60 "$PENUMBRA" merge "$@" -o "$TMP/bad.png" >"$TMP/bad.log" 2>&1; then
+    fail "penumbra merge accepted $name"
+  fi
+  [ -s "$TMP/bad.log" ] || fail "penumbra merge refused $name but said nothing"
+  say "merge refuses $name: $(head -n1 "$TMP/bad.log")"
+}
+refuse "7 of 8 shards" "${files[@]:0:7}"
+refuse "a shard given twice" "${files[@]}" "${files[3]}"
+timeout 60 "$PENUMBRA" render "$SOFT" --width 96 --height 72 --spp 16 --seed 8 --sample-range 0..2 \
+  -o "$TMP/other-seed.pshard" -q || fail "rendering a shard with another seed failed"
+refuse "shard 0 of another seed" "$TMP/other-seed.pshard" "${files[@]:1}"
 
 # ---------------------------------------------------------------- case 2: frames x shards
 if [ "$FRAMES_CASE" = 1 ]; then
