@@ -10,8 +10,9 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use penumbra::lang::{LoadOptions, load_scene_with, parse_memory_size};
 use penumbra::output::BitDepth;
 use penumbra::povray_args::{self, Job, PovSettings};
+use penumbra::render::target::TargetError;
 use penumbra::render::{AreaLightMode, LightSamples, RenderOptions, Splitting};
-use penumbra::render_job::{JobProgress, JobSettings, run_job};
+use penumbra::render_job::{JobError, JobProgress, JobSettings, run_job};
 use penumbra::study::reference::{
     MediaQuadrature, ReferenceRequest, render_reference, write_reference,
 };
@@ -47,6 +48,9 @@ enum Command {
     /// POV-Ray's switches and INI files are read too (`penumbra render scene.pov +W640
     /// +A0.3`, or without `render`): see docs/cli.md.
     Render(RenderArgs),
+    /// Merge shard files (renders of sample ranges, from many machines) into the image the
+    /// whole render gives, byte for byte; refuses shards that do not belong together.
+    Merge(MergeArgs),
     /// Parse and evaluate scenes without rendering, and summarise them.
     Check(CheckArgs),
     /// Render a converged reference with the installed POV-Ray: k times the size without
@@ -122,8 +126,46 @@ struct RenderArgs {
     /// of half the physical memory and the address-space limit.
     #[arg(long, value_name = "SIZE", value_parser = parse_memory_size)]
     max_memory: Option<u64>,
+    /// Render only samples A..B of each pixel's --spp and write their sums to a shard file
+    /// (.pshard), for `penumbra merge` (docs/farm.md).
+    #[arg(long, value_name = "A..B", value_parser = parse_range)]
+    sample_range: Option<std::ops::Range<u32>>,
+    /// Continue an interrupted render from the checkpoint beside its output (the same
+    /// command line otherwise); frames already written are skipped.
+    #[arg(long)]
+    resume: bool,
+    /// Render in passes until the estimated RMSE (linear units, or `N%` of the image's
+    /// mean) is below this with 95% confidence, the samples going where the noise is.
+    #[arg(long, value_name = "E", value_parser = parse_target)]
+    target_error: Option<(f64, bool)>,
+    /// With --target-error: stop at this many samples per pixel on average.
+    #[arg(long, value_name = "N", default_value_t = 4096)]
+    max_spp: u32,
+    /// Rewrite this PNG with the image so far while the render runs (atomically).
+    #[arg(long, value_name = "FILE.png")]
+    preview: Option<PathBuf>,
+    /// Seconds between preview rewrites.
+    #[arg(long, value_name = "SECONDS", default_value_t = 5.0)]
+    preview_every: f64,
     #[command(flatten)]
     scene_args: SceneArgs,
+}
+
+#[derive(clap::Args)]
+struct MergeArgs {
+    /// Shard files of one render (`penumbra render --sample-range`), in any order.
+    #[arg(required = true)]
+    shards: Vec<PathBuf>,
+    /// The merged image (.png or .exr).
+    #[arg(short, long)]
+    output: PathBuf,
+    /// Also write each pixel's noise estimate (the variance of its mean, per channel) as
+    /// a linear EXR.
+    #[arg(long, value_name = "FILE.exr")]
+    variance: Option<PathBuf>,
+    /// Bits per channel for PNG output.
+    #[arg(long, value_enum, default_value = "8")]
+    bit_depth: Depth,
 }
 
 #[derive(clap::Args)]
@@ -413,12 +455,14 @@ fn povray(args: &[String]) -> Result<ExitCode, String> {
         allow_write: job.allow_write.clone(),
         ..JobSettings::default()
     };
+    catch_interrupts();
     render_job(&job, &settings)
 }
 
 fn run(cli: Cli) -> Result<ExitCode, String> {
     match cli.command {
         Command::Render(args) => render(args),
+        Command::Merge(args) => merge(args),
         Command::Check(args) => Ok(check(args)),
         Command::Reference(args) => reference(args),
         Command::Compare(args) => compare(args),
@@ -430,13 +474,97 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
 
 fn render(args: RenderArgs) -> Result<ExitCode, String> {
     let job = args.job()?;
+    catch_interrupts();
+    if args.preview_every.is_nan() || args.preview_every < 0.0 {
+        return Err("--preview-every must be a number of seconds, 0 or more".into());
+    }
     let settings = JobSettings {
         base: args.render_options(),
         skip_unsupported: args.skip_unsupported,
         max_memory: args.max_memory,
         allow_write: args.scene_args.allow_write.clone(),
+        shards: args.sample_range.is_some(),
+        resume: args.resume,
+        preview: args
+            .preview
+            .clone()
+            .map(|p| (p, std::time::Duration::from_secs_f64(args.preview_every))),
     };
     render_job(&job, &settings)
+}
+
+/// Merges shards into the image (and the variance, if asked).
+fn merge(args: MergeArgs) -> Result<ExitCode, String> {
+    let mut shards = Vec::new();
+    for path in &args.shards {
+        shards.push((
+            path.clone(),
+            penumbra::output::read_shard(path).map_err(text)?,
+        ));
+    }
+    let film = penumbra::output::merge_shards(&shards)?;
+    let depth = match args.bit_depth {
+        Depth::Eight => penumbra::output::BitDepth::Eight,
+        Depth::Sixteen => penumbra::output::BitDepth::Sixteen,
+    };
+    penumbra::output::write_image(&args.output, &penumbra::film_image(&film), depth)
+        .map_err(text)?;
+    if let Some(path) = &args.variance {
+        let variance = penumbra::output::Image {
+            width: film.width,
+            height: film.height,
+            pixels: film
+                .pixels
+                .iter()
+                .map(|p| p.variance_of_mean().map(|v| v as f32))
+                .collect(),
+        };
+        penumbra::output::write_exr(
+            path,
+            &variance,
+            &[],
+            &[("penumbra", "variance of each pixel's mean")],
+        )
+        .map_err(text)?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `A..B`: a half-open range of sample indices.
+fn parse_range(s: &str) -> Result<std::ops::Range<u32>, String> {
+    let (a, b) = s
+        .split_once("..")
+        .ok_or_else(|| format!("expected A..B, got `{s}`"))?;
+    let n = |x: &str| {
+        x.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("`{x}` is not a sample index"))
+    };
+    let (a, b) = (n(a)?, n(b)?);
+    if a >= b {
+        return Err(format!("the range {a}..{b} is empty"));
+    }
+    Ok(a..b)
+}
+
+/// `0.005` (linear units) or `2%` (relative to the image's mean).
+fn parse_target(s: &str) -> Result<(f64, bool), String> {
+    let (number, relative) = match s.strip_suffix('%') {
+        Some(n) => (n, true),
+        None => (s, false),
+    };
+    let v: f64 = number
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not an error (a number, or N%)"))?;
+    if !(v > 0.0 && v.is_finite()) {
+        return Err(format!("the target error must be above 0, got `{s}`"));
+    }
+    Ok(if relative {
+        (v / 100.0, true)
+    } else {
+        (v, false)
+    })
 }
 
 /// Runs a job with a progress bar over frames and samples, and a summary line per frame.
@@ -445,7 +573,16 @@ fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
     let progress = Bar(bar.clone());
     let reports = run_job(job, settings, &progress);
     bar.finish_and_clear();
-    for r in reports? {
+    let reports = match reports {
+        Ok(r) => r,
+        Err(e @ JobError::Interrupted { .. }) => {
+            eprintln!("{e}");
+            eprintln!("to continue: {} --resume", command_line());
+            return Ok(ExitCode::from(130));
+        }
+        Err(JobError::Failed(m)) => return Err(m),
+    };
+    for r in reports {
         if !job.quiet {
             eprintln!(
                 "{}: {}x{}, {} spp{}, {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
@@ -477,6 +614,13 @@ impl RenderArgs {
             area_lights: self.area_lights.into(),
             splitting: self.splitting.into(),
             light_samples: self.light_samples,
+            sample_range: self.sample_range.clone(),
+            passes: self.preview.is_some(),
+            target_error: self.target_error.map(|(value, relative)| TargetError {
+                value,
+                relative,
+                max_spp: self.max_spp,
+            }),
             ..RenderOptions::default()
         }
     }
@@ -488,13 +632,23 @@ impl RenderArgs {
             .as_ref()
             .and_then(|o| o.extension())
             .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+        let shard = self.sample_range.is_some();
+        let output = self.output.clone().unwrap_or_else(|| {
+            default_output(&self.scene).with_extension(if shard { "pshard" } else { "png" })
+        });
+        let is_shard = output
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("pshard"));
+        if shard != is_shard {
+            return Err(if shard {
+                "--sample-range writes a shard: give an output ending in .pshard, and merge the shards into an image with `penumbra merge`".into()
+            } else {
+                "a .pshard output needs --sample-range A..B".into()
+            });
+        }
         let mut settings = PovSettings {
             input: Some(self.scene.clone()),
-            output: Some(
-                self.output
-                    .clone()
-                    .unwrap_or_else(|| default_output(&self.scene)),
-            ),
+            output: Some(output),
             file_type: if exr { 'E' } else { 'N' },
             bits_per_colour: match self.bit_depth {
                 Depth::Eight => 8,
@@ -774,6 +928,10 @@ impl JobProgress for Bar {
         self.0.set_position(done);
     }
 
+    fn cancelled(&self) -> bool {
+        CANCELLED.load(std::sync::atomic::Ordering::Relaxed)
+    }
+
     fn warnings(&self, warnings: &[penumbra::lang::Diagnostic]) {
         self.0.suspend(|| print_warnings(warnings));
     }
@@ -790,6 +948,34 @@ impl study_converge::Log for StderrLog {
             eprintln!("{text}");
         }
     }
+}
+
+/// Set by Ctrl-C or SIGTERM: renders stop at the next sample and save a checkpoint.
+static CANCELLED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// The first signal asks the render to stop and save its samples; a second ends the
+/// process at once.
+fn catch_interrupts() {
+    let _ = ctrlc::set_handler(|| {
+        if CANCELLED.swap(true, std::sync::atomic::Ordering::Relaxed) {
+            std::process::exit(130);
+        }
+    });
+}
+
+/// This process's command line, quoted where a shell needs it, without a --resume.
+fn command_line() -> String {
+    std::env::args()
+        .filter(|a| a != "--resume")
+        .map(|a| {
+            if a.is_empty() || a.contains(|c: char| c.is_whitespace() || "'\"$`\\*?".contains(c)) {
+                format!("'{}'", a.replace('\'', "'\\''"))
+            } else {
+                a
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 fn default_output(scene: &Path) -> PathBuf {

@@ -3,12 +3,10 @@
 //! under its own name (a window full-size with the rest black, as POV-Ray writes it, or
 //! cropped).
 
-use std::collections::hash_map::DefaultHasher;
-use std::hash::Hasher;
 use std::path::PathBuf;
 
 use crate::lang::{AnimationClock, Diagnostic, LoadOptions, load_scene_with};
-use crate::output::{BitDepth, Image, write_image};
+use crate::output::{BitDepth, Fnv, Image, ShardHeader, read_shard, write_image, write_shard};
 use crate::povray_args::{Frame, Job};
 use crate::render::{Film, PreparedScene, Progress, RenderOptions, RenderStats};
 
@@ -20,6 +18,10 @@ pub trait JobProgress: Sync {
     fn samples(&self, done: u64, total: u64);
     /// Warnings from reading the scene.
     fn warnings(&self, warnings: &[Diagnostic]);
+    /// True once the user asked to stop (Ctrl-C, SIGTERM).
+    fn cancelled(&self) -> bool {
+        false
+    }
 }
 
 /// One written frame.
@@ -44,6 +46,54 @@ pub struct JobSettings {
     pub max_memory: Option<u64>,
     /// `--allow-write DIR` for `#fopen ... write`.
     pub allow_write: Option<PathBuf>,
+    /// Write each frame's film as a shard file (sums, for `penumbra merge`), not an image.
+    pub shards: bool,
+    /// Continue from each frame's checkpoint; frames already written are skipped.
+    pub resume: bool,
+    /// Rewrite this PNG with the image so far at most this often.
+    pub preview: Option<(PathBuf, std::time::Duration)>,
+}
+
+/// Why a job stopped.
+#[derive(Debug)]
+pub enum JobError {
+    Failed(String),
+    /// Cancelled: the frame's samples so far are in `checkpoint`.
+    Interrupted {
+        checkpoint: PathBuf,
+        done: u64,
+        total: u64,
+    },
+}
+
+impl std::fmt::Display for JobError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            JobError::Failed(m) => f.write_str(m),
+            JobError::Interrupted {
+                checkpoint,
+                done,
+                total,
+            } => write!(
+                f,
+                "interrupted after {done} of {total} samples; they are saved in {}",
+                checkpoint.display()
+            ),
+        }
+    }
+}
+
+impl From<String> for JobError {
+    fn from(m: String) -> Self {
+        JobError::Failed(m)
+    }
+}
+
+/// Where an output's checkpoint goes: beside it.
+pub fn checkpoint_path(output: &std::path::Path) -> PathBuf {
+    let mut name = output.as_os_str().to_owned();
+    name.push(".checkpoint");
+    PathBuf::from(name)
 }
 
 impl JobProgress for () {
@@ -52,20 +102,43 @@ impl JobProgress for () {
     fn warnings(&self, _: &[Diagnostic]) {}
 }
 
-struct SampleProgress<'a>(&'a dyn JobProgress);
+/// A job's progress as a render sees it, with the preview it rewrites between passes.
+struct SampleProgress<'a> {
+    job: &'a dyn JobProgress,
+    preview: Option<&'a (PathBuf, std::time::Duration)>,
+    last_preview: std::sync::Mutex<std::time::Instant>,
+}
 
 impl Progress for SampleProgress<'_> {
     fn advance(&self, done: u64, total: u64) {
-        self.0.samples(done, total);
+        self.job.samples(done, total);
+    }
+
+    fn cancelled(&self) -> bool {
+        self.job.cancelled()
+    }
+
+    fn pass(&self, film: &Film) {
+        let Some((path, every)) = self.preview else {
+            return;
+        };
+        let mut last = self.last_preview.lock().unwrap_or_else(|e| e.into_inner());
+        if last.elapsed() >= *every {
+            // A preview that cannot be written must not stop the render.
+            let _ = write_image(path, &crate::film_image(film), BitDepth::Eight);
+            *last = std::time::Instant::now();
+        }
     }
 }
 
-/// Renders every frame of `job` and writes it (unless the job does not write).
+/// Renders every frame of `job` and writes it (unless the job does not write): as an
+/// image, or with `settings.shards` as a shard. Cancelled, the frame's film so far is saved
+/// as a checkpoint beside its output, from which `settings.resume` continues.
 pub fn run_job(
     job: &Job,
     settings: &JobSettings,
     progress: &dyn JobProgress,
-) -> Result<Vec<FrameReport>, String> {
+) -> Result<Vec<FrameReport>, JobError> {
     let mut frames = FrameRenderer {
         job,
         settings,
@@ -76,21 +149,25 @@ pub fn run_job(
     };
     let mut reports = Vec::new();
     for (index, frame) in job.frames.iter().enumerate() {
+        let checkpoint = checkpoint_path(&frame.output);
+        if settings.resume && !checkpoint.exists() && frame.output.exists() {
+            // Outputs are written atomically: one that exists is complete.
+            continue;
+        }
         progress.frame(index, job.frames.len(), &frame.output);
         let (film, stats, rebuilt) = frames.render(frame)?;
-        let mut image = crate::film_image(&film);
-        if job.crop
-            && let Some(w) = &job.window
-        {
-            image = crop(&image, w);
+        if !stats.complete {
+            return Err(frames.save_checkpoint(frame, &film, &checkpoint)?);
         }
-        if job.write {
-            write_frame(job, &frame.output, &image)?;
+        let (width, height) = frames.write(frame, &film)?;
+        if settings.resume && checkpoint.exists() {
+            std::fs::remove_file(&checkpoint)
+                .map_err(|e| format!("cannot remove {}: {e}", checkpoint.display()))?;
         }
         reports.push(FrameReport {
             output: frame.output.clone(),
-            width: image.width,
-            height: image.height,
+            width,
+            height,
             stats,
             rebuilt,
         });
@@ -159,8 +236,12 @@ impl FrameRenderer<'_> {
         let n = self.job.motion_blur.max(1);
         if n == 1 || frame.clock.clock_delta == 0.0 {
             let rebuilt = self.prepare(frame.clock)?;
-            let (film, stats) = self.run(&self.options)?;
+            let checkpoint = self.checkpoint(frame)?;
+            let (film, stats) = self.run(&self.options, checkpoint.as_ref())?;
             return Ok((film, stats, rebuilt));
+        }
+        if self.settings.resume {
+            return Err("--resume does not work with --motion-blur".into());
         }
         let spp = self.options.samples_per_pixel;
         if self.options.adaptive || spp < n {
@@ -179,7 +260,10 @@ impl FrameRenderer<'_> {
                 sample_range: Some(k * spp / n..(k + 1) * spp / n),
                 ..self.options.clone()
             };
-            let (part, stats) = self.run(&options)?;
+            let (part, stats) = self.run(&options, None)?;
+            if !stats.complete {
+                return Err("interrupted (a motion-blurred frame keeps no checkpoint)".into());
+            }
             film.merge(&part);
             total = Some(match total {
                 None => stats,
@@ -216,10 +300,104 @@ impl FrameRenderer<'_> {
         Ok(rebuilt)
     }
 
-    fn run(&self, options: &RenderOptions) -> Result<(Film, RenderStats), String> {
+    fn run(
+        &self,
+        options: &RenderOptions,
+        checkpoint: Option<&Film>,
+    ) -> Result<(Film, RenderStats), String> {
         let (_, scene) = self.prepared.as_ref().expect("prepared first");
-        crate::render::render(scene, options, &SampleProgress(self.progress))
-            .map_err(|e| e.to_string())
+        let progress = SampleProgress {
+            job: self.progress,
+            preview: self.settings.preview.as_ref(),
+            last_preview: std::sync::Mutex::new(std::time::Instant::now()),
+        };
+        crate::render::render_from(scene, options, checkpoint, &progress).map_err(|e| e.to_string())
+    }
+
+    /// What the frame's shard or checkpoint says about its render.
+    fn header(&self, frame: &Frame, complete: bool) -> ShardHeader {
+        let o = &self.options;
+        let spp = o.samples_per_pixel.max(1);
+        ShardHeader {
+            version: env!("CARGO_PKG_VERSION").to_string(),
+            scene_hash: self.prepared.as_ref().map_or(0, |(k, _)| *k),
+            scene: self.job.scene.display().to_string(),
+            frame: frame.number,
+            width: o.width,
+            height: o.height,
+            spp,
+            seed: o.seed,
+            options: format!(
+                "quality {} area-lights {:?} splitting {:?} light-samples {:?} roulette {} stratified {} window {:?} adaptive {} motion-blur {}",
+                o.quality,
+                o.area_lights,
+                o.splitting,
+                o.light_samples,
+                o.roulette,
+                o.stratified,
+                o.window,
+                o.adaptive,
+                self.job.motion_blur
+            ),
+            range: o.sample_range.clone().unwrap_or(0..spp),
+            complete,
+        }
+    }
+
+    /// With `resume`, the frame's checkpoint if it has one, checked against this render.
+    fn checkpoint(&self, frame: &Frame) -> Result<Option<Film>, String> {
+        let path = checkpoint_path(&frame.output);
+        if !self.settings.resume || !path.exists() {
+            return Ok(None);
+        }
+        let shard = read_shard(&path).map_err(|e| e.to_string())?;
+        let mut want = self.header(frame, false);
+        want.scene = shard.header.scene.clone();
+        if shard.header != want {
+            return Err(format!(
+                "{} is the checkpoint of another render (another scene, size, seed or options); remove it to start again",
+                path.display()
+            ));
+        }
+        Ok(Some(shard.film))
+    }
+
+    fn save_checkpoint(
+        &self,
+        frame: &Frame,
+        film: &Film,
+        path: &std::path::Path,
+    ) -> Result<JobError, String> {
+        write_shard(path, &self.header(frame, false), film).map_err(|e| e.to_string())?;
+        let range = self.header(frame, false).range;
+        let window = self.options.window.as_ref();
+        let pixels = window.map_or(film.pixels.len(), |w| w.x.len() * w.y.len()) as u64;
+        Ok(JobError::Interrupted {
+            checkpoint: path.to_path_buf(),
+            done: film.samples(),
+            total: pixels * u64::from(range.end - range.start),
+        })
+    }
+
+    /// Writes the frame as a shard or an image: the written size.
+    fn write(&self, frame: &Frame, film: &Film) -> Result<(usize, usize), String> {
+        if self.settings.shards {
+            if self.job.write {
+                write_shard(&frame.output, &self.header(frame, true), film)
+                    .map_err(|e| e.to_string())?;
+            }
+            return Ok((film.width, film.height));
+        }
+        let mut image = crate::film_image(film);
+        if self.job.crop
+            && let Some(w) = &self.job.window
+        {
+            image = crop(&image, w);
+        }
+        if self.job.write {
+            write_frame(self.job, &frame.output, &image)?;
+        }
+        Ok((image.width, image.height))
     }
 }
 
@@ -251,16 +429,17 @@ pub fn crop(image: &Image, window: &crate::render::PixelWindow) -> Image {
 }
 
 /// A hash of everything the scene holds (through its Debug form, without building the
-/// text), so frames whose scene did not change keep their render-ready scene.
-fn scene_hash(scene: &crate::scene::Scene) -> u64 {
-    struct HashWriter(DefaultHasher);
+/// text), so frames whose scene did not change keep their render-ready scene, and shards
+/// of different scenes are not merged. FNV-1a: the same on every machine and version.
+pub fn scene_hash(scene: &crate::scene::Scene) -> u64 {
+    struct HashWriter(Fnv);
     impl std::fmt::Write for HashWriter {
         fn write_str(&mut self, s: &str) -> std::fmt::Result {
             self.0.write(s.as_bytes());
             Ok(())
         }
     }
-    let mut w = HashWriter(DefaultHasher::new());
+    let mut w = HashWriter(Fnv::default());
     let _ = std::fmt::write(&mut w, format_args!("{scene:?}"));
     w.0.finish()
 }

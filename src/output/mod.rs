@@ -11,12 +11,14 @@ mod error;
 mod exr_file;
 mod image;
 mod png_file;
+mod shard;
 pub mod srgb;
 
 pub use self::error::OutputError;
 pub use self::exr_file::{ExrFile, read_exr, write_exr};
 pub use self::image::Image;
 pub use self::png_file::{read_png, write_png};
+pub use self::shard::{Fnv, Shard, ShardHeader, merge_shards, read_shard, write_shard};
 
 use std::path::Path;
 

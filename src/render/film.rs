@@ -1,6 +1,8 @@
 //! The film keeps per-pixel sums, not averages, so that renders of disjoint sample ranges
 //! merge by addition. Sums are 64-bit fixed point: integer addition is associative, so the
-//! merged sums equal the single-run sums bit for bit, whatever the split.
+//! merged sums equal the single-run sums bit for bit, whatever the split. The sums of
+//! squares are the squares of the same fixed-point samples, in 128 bits, so the variance
+//! a merged film reports is exactly the single run's too.
 
 /// Fixed-point scale: 2^-24 (6e-8) resolution per sample, sums up to 5e11.
 const SCALE: f64 = (1u64 << 24) as f64;
@@ -9,23 +11,42 @@ const SCALE: f64 = (1u64 << 24) as f64;
 pub struct PixelSum {
     pub rgb: [i64; 3],
     pub count: u32,
+    /// Sums of the squared fixed-point samples (scale 2^48).
+    pub squares: [u128; 3],
 }
 
 impl PixelSum {
     /// Adds one sample (linear radiance). Non-finite samples must be filtered by the caller.
     #[inline]
     pub fn add(&mut self, rgb: [f64; 3]) {
-        for (s, v) in self.rgb.iter_mut().zip(rgb) {
-            *s = s.saturating_add((v * SCALE).round() as i64);
+        for ((sum, square), v) in self.rgb.iter_mut().zip(&mut self.squares).zip(rgb) {
+            let q = (v * SCALE).round() as i64;
+            *sum = sum.saturating_add(q);
+            *square = square.saturating_add(u128::from(q.unsigned_abs()).pow(2));
         }
         self.count += 1;
     }
 
     pub fn merge(&mut self, other: &PixelSum) {
-        for (s, o) in self.rgb.iter_mut().zip(other.rgb) {
-            *s = s.saturating_add(o);
+        for c in 0..3 {
+            self.rgb[c] = self.rgb[c].saturating_add(other.rgb[c]);
+            self.squares[c] = self.squares[c].saturating_add(other.squares[c]);
         }
         self.count += other.count;
+    }
+
+    /// The variance of this pixel's mean, per channel: the samples' unbiased variance over
+    /// the count (0 with fewer than two samples).
+    pub fn variance_of_mean(&self) -> [f64; 3] {
+        if self.count < 2 {
+            return [0.0; 3];
+        }
+        let n = f64::from(self.count);
+        std::array::from_fn(|c| {
+            let sum = self.rgb[c] as f64 / SCALE;
+            let squares = self.squares[c] as f64 / (SCALE * SCALE);
+            ((squares - sum * sum / n) / (n - 1.0)).max(0.0) / n
+        })
     }
 
     pub fn mean(&self) -> [f64; 3] {
@@ -56,13 +77,20 @@ impl Film {
         }
     }
 
-    /// Adds another film of the same size (another sample range of the same render).
+    /// Adds another film of the same size (another sample range of the same render). The
+    /// non-finite list is kept sorted, so it too is the same whatever the split.
     pub fn merge(&mut self, other: &Film) {
         assert_eq!((self.width, self.height), (other.width, other.height));
         for (a, b) in self.pixels.iter_mut().zip(&other.pixels) {
             a.merge(b);
         }
         self.non_finite.extend_from_slice(&other.non_finite);
+        self.non_finite.sort_unstable_by_key(|&(x, y)| (y, x));
+    }
+
+    /// Samples the film holds, over all pixels.
+    pub fn samples(&self) -> u64 {
+        self.pixels.iter().map(|p| u64::from(p.count)).sum()
     }
 
     /// Mean radiance per pixel, row-major, top row first.

@@ -10,6 +10,7 @@ pub mod lights;
 pub mod media;
 pub mod prepared;
 pub mod sampler;
+pub mod target;
 
 use std::ops::Range;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -59,6 +60,11 @@ pub struct RenderOptions {
     /// below 5 area lights as point lights, below 4 no shadows, below 2 no diffuse or
     /// highlights (the pigment colour only).
     pub quality: u32,
+    /// Render in passes of doubling sample counts, each reported to [`Progress::pass`]
+    /// (for previews); the film is the same as in one pass.
+    pub passes: bool,
+    /// Render in passes until the estimated noise is below this (see [`target`]).
+    pub target_error: Option<target::TargetError>,
 }
 
 /// A rectangle of pixels: columns `x`, rows `y` (row 0 at the top).
@@ -91,6 +97,8 @@ impl Default for RenderOptions {
             stratified: true,
             window: None,
             quality: 9,
+            passes: false,
+            target_error: None,
         }
     }
 }
@@ -103,6 +111,8 @@ pub struct RenderStats {
     /// What the render noticed about the scene, as POV-Ray's shutdown warnings do (an
     /// isosurface steeper than its max_gradient).
     pub notes: Vec<String>,
+    /// False when the render was cancelled before it took all its samples.
+    pub complete: bool,
 }
 
 impl RenderStats {
@@ -111,9 +121,16 @@ impl RenderStats {
     }
 }
 
-/// Reports progress as a fraction done; called from worker threads.
+/// Reports progress as a fraction done, and says when to stop; called from worker threads.
 pub trait Progress: Sync {
     fn advance(&self, done: u64, total: u64);
+    /// True once the render should stop (Ctrl-C): it ends at the next sample boundary and
+    /// returns the film so far, whose per-pixel counts say which samples it holds.
+    fn cancelled(&self) -> bool {
+        false
+    }
+    /// A pass of a render in passes (preview, target error) has ended: the film so far.
+    fn pass(&self, _film: &Film) {}
 }
 
 impl Progress for () {
@@ -134,24 +151,29 @@ impl std::error::Error for RenderError {}
 /// Renders into a film. Each pixel's samples are taken in index order by one thread, and
 /// tiles are written back in a fixed order, so the result is the same for any thread count.
 /// With `adaptive`, a pilot pass measures the noise and the rest of the sample budget
-/// follows it (see [`adaptive_passes`]).
+/// follows it (see [`adaptive_passes`]); with a target error, passes continue until the
+/// noise estimate is below it (see [`target`]).
 pub fn render(
     scene: &PreparedScene,
     options: &RenderOptions,
     progress: &dyn Progress,
 ) -> Result<(Film, RenderStats), RenderError> {
+    render_from(scene, options, None, progress)
+}
+
+/// Continues a render from a checkpoint: the film of an interrupted render of the same
+/// scene and options, whose pixel counts say how many of each pixel's samples it holds. The
+/// result is the uninterrupted render's film exactly.
+pub fn render_from(
+    scene: &PreparedScene,
+    options: &RenderOptions,
+    checkpoint: Option<&Film>,
+    progress: &dyn Progress,
+) -> Result<(Film, RenderStats), RenderError> {
     let start = Instant::now();
-    let (w, h) = (options.width, options.height);
-    if w == 0 || h == 0 {
-        return Err(RenderError("the image size must be at least 1x1".into()));
-    }
-    let spp = options.samples_per_pixel.max(1);
-    let range = options.sample_range.clone().unwrap_or(0..spp);
-    if range.end > spp || range.start > range.end {
-        return Err(RenderError(format!(
-            "sample range {}..{} is outside 0..{spp}",
-            range.start, range.end
-        )));
+    let range = sample_range(options)?;
+    if let Some(done) = checkpoint {
+        check_checkpoint(options, done)?;
     }
     let pool = match options.threads {
         Some(n) => Some(
@@ -166,34 +188,140 @@ pub fn render(
         Some(pool) => pool.install(|| render_pass(scene, options, plan, progress)),
         None => render_pass(scene, options, plan, progress),
     };
-    let (film, rays, samples) = if options.adaptive {
-        if options.sample_range.is_some() {
-            return Err(RenderError(
-                "adaptive sampling cannot be split into sample ranges".into(),
-            ));
-        }
-        adaptive_passes(options, spp, &|plan, p| run(plan, p), progress)
-    } else {
-        let plan = SamplePlan::Uniform {
-            spp,
-            range: range.clone(),
-            seed: options.seed,
-            one_ray: false,
-        };
-        let (film, _, rays) = run(&plan, progress);
-        (
-            film,
-            rays,
-            pixel_count(options) * (range.end - range.start) as u64,
+    let (film, rays, samples) = if let Some(target) = &options.target_error {
+        target::render_to_error(options, target, &|plan, p| run(plan, p), progress)
+    } else if options.adaptive {
+        adaptive_passes(
+            options,
+            options.samples_per_pixel.max(1),
+            &|plan, p| run(plan, p),
+            progress,
         )
+    } else {
+        uniform_passes(
+            options,
+            range.clone(),
+            checkpoint,
+            &|plan, p| run(plan, p),
+            progress,
+        )
+    };
+    let complete = match (&options.target_error, options.adaptive) {
+        (None, false) => holds_range(options, &film, range.len() as u32),
+        _ => !progress.cancelled(),
     };
     let stats = RenderStats {
         wall: start.elapsed(),
         samples,
         rays,
         notes: scene.world.gradient_notes(),
+        complete,
     };
     Ok((film, stats))
+}
+
+/// The sample indices the options ask for, checked.
+fn sample_range(options: &RenderOptions) -> Result<Range<u32>, RenderError> {
+    let (w, h) = (options.width, options.height);
+    if w == 0 || h == 0 {
+        return Err(RenderError("the image size must be at least 1x1".into()));
+    }
+    let spp = options.samples_per_pixel.max(1);
+    let range = options.sample_range.clone().unwrap_or(0..spp);
+    if range.end > spp || range.start > range.end {
+        return Err(RenderError(format!(
+            "sample range {}..{} is outside 0..{spp}",
+            range.start, range.end
+        )));
+    }
+    if (options.adaptive || options.target_error.is_some()) && options.sample_range.is_some() {
+        return Err(RenderError(
+            "adaptive sampling and --target-error cannot be split into sample ranges".into(),
+        ));
+    }
+    Ok(range)
+}
+
+fn check_checkpoint(options: &RenderOptions, done: &Film) -> Result<(), RenderError> {
+    if options.adaptive || options.target_error.is_some() {
+        return Err(RenderError(
+            "adaptive and target-error renders cannot resume from a checkpoint".into(),
+        ));
+    }
+    if (done.width, done.height) != (options.width, options.height) {
+        return Err(RenderError(format!(
+            "the checkpoint is {}x{}, the render {}x{}",
+            done.width, done.height, options.width, options.height
+        )));
+    }
+    Ok(())
+}
+
+/// Whether every pixel the render covers holds `n` samples.
+fn holds_range(options: &RenderOptions, film: &Film, n: u32) -> bool {
+    let w = options.width;
+    film.pixels.iter().enumerate().all(|(i, p)| {
+        let inside = options
+            .window
+            .as_ref()
+            .is_none_or(|win| win.contains(i % w, i / w));
+        !inside || p.count == n
+    })
+}
+
+/// A uniform render: every pixel takes the samples of `range` (those after the
+/// checkpoint's), in one pass, or with `options.passes` in passes of doubling size reported
+/// to `progress` (each pixel still takes its samples in index order, so the film is the
+/// same).
+fn uniform_passes(
+    options: &RenderOptions,
+    range: Range<u32>,
+    checkpoint: Option<&Film>,
+    run: &Pass,
+    progress: &dyn Progress,
+) -> (Film, RayCounts, u64) {
+    let passes = if options.passes {
+        doubling(range.clone())
+    } else {
+        vec![range.clone()]
+    };
+    let mut film = checkpoint
+        .cloned()
+        .unwrap_or_else(|| Film::new(options.width, options.height));
+    let before = film.samples();
+    let mut rays = RayCounts::default();
+    for pass in passes {
+        let plan = SamplePlan::Uniform {
+            spp: options.samples_per_pixel.max(1),
+            range: pass,
+            first: range.start,
+            checkpoint,
+            seed: options.seed,
+            one_ray: false,
+        };
+        let (part, pass_rays) = run(&plan, progress);
+        film.merge(&part);
+        rays.add(&pass_rays);
+        if progress.cancelled() {
+            break;
+        }
+        progress.pass(&film);
+    }
+    let samples = film.samples() - before;
+    (film, rays, samples)
+}
+
+/// `range` cut into passes of 1, 1, 2, 4, ... samples.
+fn doubling(range: Range<u32>) -> Vec<Range<u32>> {
+    let mut passes = Vec::new();
+    let mut at = range.start;
+    while at < range.end {
+        let size = (at - range.start).max(1);
+        let end = (at + size).min(range.end);
+        passes.push(at..end);
+        at = end;
+    }
+    passes
 }
 
 /// Pixels rendered: the window's, or the whole image's.
@@ -208,7 +336,7 @@ fn pixel_count(options: &RenderOptions) -> u64 {
 const ADAPTIVE_PILOT: u32 = 4;
 
 /// A render pass, as `render` runs it on its thread pool.
-type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress) -> (Film, Vec<f64>, RayCounts) + 'a;
+type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress) -> (Film, RayCounts) + 'a;
 
 /// Adaptive sampling in two passes. A pilot of a few samples per pixel measures the noise;
 /// each pixel's further samples then follow the noise its neighbours showed, not its own,
@@ -224,11 +352,13 @@ fn adaptive_passes(
     let pilot = SamplePlan::Uniform {
         spp: pilot_spp,
         range: 0..pilot_spp,
+        first: 0,
+        checkpoint: None,
         seed: options.seed ^ 0xad47_1be5_5eed_0001,
         one_ray: true,
     };
-    let (mut film, pilot_sq, mut rays) = run(&pilot, &());
-    let noise = neighbour_noise(&film, &pilot_sq, pilot_spp);
+    let (mut film, mut rays) = run(&pilot, &());
+    let noise = neighbour_noise(&film);
     let counts = allocate(&noise, pilot_spp, spp);
     let extra: u64 = counts.iter().map(|&n| n as u64).sum();
     // Where the neighbours showed no noise at all, the light is seen whole or not at all
@@ -239,7 +369,7 @@ fn adaptive_passes(
         seed: options.seed,
         one_ray,
     };
-    let (more, _, more_rays) = run(&plan, progress);
+    let (more, more_rays) = run(&plan, progress);
     // The pilot's one-ray samples stay in a pixel's mean only where its further samples
     // are of the same kind: beside samples that cover the light grid they would only add
     // their noise. (Which it is depends on the neighbours alone, so either mean is unbiased.)
@@ -272,12 +402,15 @@ fn adaptive_passes(
 }
 
 /// Which samples each pixel takes.
-enum SamplePlan {
-    /// Every pixel takes samples `range` of `spp`; with `one_ray`, one shadow ray per area
-    /// light per sample whatever the render's light sampling.
+enum SamplePlan<'a> {
+    /// Every pixel takes samples `range` of `spp`, except those a checkpoint holds (its
+    /// count of them from `first` on); with `one_ray`, one shadow ray per area light per
+    /// sample whatever the render's light sampling.
     Uniform {
         spp: u32,
         range: Range<u32>,
+        first: u32,
+        checkpoint: Option<&'a Film>,
         seed: u64,
         one_ray: bool,
     },
@@ -298,20 +431,25 @@ struct PixelPlan {
     one_ray: bool,
 }
 
-impl SamplePlan {
+impl SamplePlan<'_> {
     fn pixel(&self, i: usize) -> PixelPlan {
         match self {
             SamplePlan::Uniform {
                 spp,
                 range,
+                first,
+                checkpoint,
                 seed,
                 one_ray,
-            } => PixelPlan {
-                spp: *spp,
-                range: range.clone(),
-                seed: *seed,
-                one_ray: *one_ray,
-            },
+            } => {
+                let done = checkpoint.map_or(0, |c| c.pixels[i].count);
+                PixelPlan {
+                    spp: *spp,
+                    range: range.start.max(first + done)..range.end,
+                    seed: *seed,
+                    one_ray: *one_ray,
+                }
+            }
             SamplePlan::PerPixel {
                 counts,
                 seed,
@@ -330,22 +468,9 @@ impl SamplePlan {
 /// deviation among its eight neighbours. A pilot of a few samples can miss noise that is
 /// there (four light samples that happen to agree), hence the neighbourhood; the pixel
 /// itself is left out so that what is decided from this does not depend on its own samples.
-fn neighbour_noise(pilot: &Film, pilot_sq: &[f64], pilot_spp: u32) -> Vec<f64> {
-    let n = pilot_spp as f64;
+fn neighbour_noise(pilot: &Film) -> Vec<f64> {
     let (w, h) = (pilot.width, pilot.height);
-    let sigma: Vec<f64> = pilot
-        .pixels
-        .iter()
-        .zip(pilot_sq)
-        .map(|(p, sq)| {
-            if pilot_spp < 2 {
-                return 0.0;
-            }
-            let m = p.mean();
-            let mean = (m[0] + m[1] + m[2]) / 3.0;
-            ((sq - n * mean * mean) / (n - 1.0)).max(0.0).sqrt()
-        })
-        .collect();
+    let sigma: Vec<f64> = pilot.pixels.iter().map(sample_deviation).collect();
     (0..w * h)
         .map(|i| {
             let (x, y) = (i % w, i / w);
@@ -360,6 +485,13 @@ fn neighbour_noise(pilot: &Film, pilot_sq: &[f64], pilot_spp: u32) -> Vec<f64> {
             m
         })
         .collect()
+}
+
+/// The standard deviation of one sample of the pixel, over the three channels (0 with fewer
+/// than two samples).
+fn sample_deviation(p: &PixelSum) -> f64 {
+    let v = p.variance_of_mean();
+    (f64::from(p.count) * (v[0] + v[1] + v[2]) / 3.0).sqrt()
 }
 
 /// The samples each pixel takes after the pilot, for `spp` per pixel on average in all, in
@@ -398,14 +530,14 @@ fn sample_camera_ray(
     camera_ray(&scene.camera, sx, sy, lens)
 }
 
-/// One pass over the image: the film, each pixel's sum of squared luminance (for noise
-/// estimates) and the rays traced.
+/// One pass over the image: the film and the rays traced. Cancelled, each pixel stops at a
+/// sample boundary and its count says how many of its samples it took.
 fn render_pass(
     scene: &PreparedScene,
     options: &RenderOptions,
     plan: &SamplePlan,
     progress: &dyn Progress,
-) -> (Film, Vec<f64>, RayCounts) {
+) -> (Film, RayCounts) {
     let (w, h) = (options.width, options.height);
     let window = match plan {
         // In adaptive mode the one uniform plan is the pilot.
@@ -444,7 +576,6 @@ fn render_pass(
         let mut sampler = new_sampler(1);
         let mut counts = RayCounts::default();
         let mut sums = Vec::with_capacity(TILE * TILE);
-        let mut squares = Vec::with_capacity(TILE * TILE);
         let mut non_finite = Vec::new();
         for y in y0..(y0 + TILE).min(h) {
             for x in x0..(x0 + TILE).min(w) {
@@ -456,7 +587,6 @@ fn render_pass(
                 } = plan.pixel(y * w + x);
                 if !inside(x, y) {
                     sums.push(PixelSum::default());
-                    squares.push(0.0);
                     continue;
                 }
                 if sampler.samples_per_pixel() != spp {
@@ -468,8 +598,10 @@ fn render_pass(
                     &integrator
                 };
                 let mut sum = PixelSum::default();
-                let mut square = 0.0;
                 for index in range {
+                    if progress.cancelled() {
+                        break;
+                    }
                     sampler.start(x as u32, y as u32, index, seed);
                     // No ray (outside a fisheye's circle): black, as POV-Ray renders it.
                     let l = sample_camera_ray(scene, &layout, (x, y, w, h), &mut sampler)
@@ -478,34 +610,28 @@ fn render_pass(
                         });
                     if l.is_finite() {
                         sum.add(l.to_array());
-                        let y = (l.x + l.y + l.z) / 3.0;
-                        square += y * y;
                     } else {
                         sum.add([0.0; 3]);
                         non_finite.push((x as u32, y as u32));
                     }
                 }
                 sums.push(sum);
-                squares.push(square);
             }
         }
         let n = done.fetch_add(1, Ordering::Relaxed) + 1;
         progress.advance(n, total);
-        (sums, squares, counts, non_finite)
+        (sums, counts, non_finite)
     };
     let results: Vec<_> = tiles.par_iter().map(render_tile).collect();
     let mut film = Film::new(w, h);
-    let mut all_squares = vec![0.0; w * h];
     let mut rays = RayCounts::default();
-    for (&(x0, y0), (sums, squares, counts, non_finite)) in tiles.iter().zip(results) {
+    for (&(x0, y0), (sums, counts, non_finite)) in tiles.iter().zip(results) {
         let tw = (x0 + TILE).min(w) - x0;
-        for (i, (s, q)) in sums.into_iter().zip(squares).enumerate() {
-            let at = (y0 + i / tw) * w + x0 + i % tw;
-            film.pixels[at] = s;
-            all_squares[at] = q;
+        for (i, s) in sums.into_iter().enumerate() {
+            film.pixels[(y0 + i / tw) * w + x0 + i % tw] = s;
         }
         rays.add(&counts);
         film.non_finite.extend(non_finite);
     }
-    (film, all_squares, rays)
+    (film, rays)
 }
