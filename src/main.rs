@@ -118,6 +118,10 @@ struct RenderArgs {
     /// +KFIA +KFFB), named scene01.png ... like POV-Ray's.
     #[arg(long, value_name = "A..B")]
     frames: Option<String>,
+    /// With --frames: render only frame N of the animation (its clock as in the whole
+    /// animation, as POV-Ray's +SF N +EF N), for a farm's frames x shards grid.
+    #[arg(long, value_name = "N", requires = "frames")]
+    frame: Option<i64>,
     /// With --frames: each frame averages N times spread over its shutter (the frame's clock
     /// to the next frame's), the scene parsed at each.
     #[arg(long, value_name = "N", default_value_t = 1)]
@@ -676,6 +680,17 @@ impl RenderArgs {
             };
             settings.animation.initial_frame = frame(a)?;
             settings.animation.final_frame = frame(b)?;
+            if let Some(n) = self.frame {
+                let (a, b) = (
+                    settings.animation.initial_frame,
+                    settings.animation.final_frame,
+                );
+                if !(a..=b).contains(&n) {
+                    return Err(format!("--frame {n} is not one of the frames {a}..{b}"));
+                }
+                settings.animation.subset_start = Some(povray_args::Bound::Pixel(n));
+                settings.animation.subset_end = Some(povray_args::Bound::Pixel(n));
+            }
         }
         let mut job = povray_args::job::job(&settings)?;
         job.sampling.adaptive = self.adaptive;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Submits a penumbra render split into shards to Slurm: a job array of K shard tasks
-# (penumbra-shards.sbatch) and a merge job (penumbra-merge.sbatch) that waits for the whole
+# (F x K with FRAMES) (penumbra-shards.sbatch) and a merge job (penumbra-merge.sbatch) that waits for the whole
 # array with --dependency=afterok:<array job id>. Prints the two job ids:
 #   array_job=<id>
 #   merge_job=<id>
@@ -61,7 +61,14 @@ common=(--parsable --chdir="$OUT_DIR" --export=ALL)
 # shellcheck disable=SC2206
 [ -z "${SBATCH_ARGS:-}" ] || common+=($SBATCH_ARGS)
 
-array="0-$((SHARDS - 1))"
+# One task per shard, or with FRAMES=A..B one per (frame, shard): F * K tasks.
+TASKS=$SHARDS
+if [ -n "$FRAMES" ]; then
+  [[ $FRAMES =~ ^([0-9]+)\.\.([0-9]+)$ ]] || die "FRAMES must be A..B, got '$FRAMES'"
+  [ "${BASH_REMATCH[2]}" -ge "${BASH_REMATCH[1]}" ] || die "FRAMES $FRAMES is empty"
+  TASKS=$(((BASH_REMATCH[2] - BASH_REMATCH[1] + 1) * SHARDS))
+fi
+array="0-$((TASKS - 1))"
 [ -z "${ARRAY_LIMIT:-}" ] || array="$array%$ARRAY_LIMIT"
 
 array_job=$(sbatch "${common[@]}" --array="$array" --cpus-per-task="$CPUS_PER_TASK" \
