@@ -12,7 +12,7 @@ use penumbra::output::BitDepth;
 use penumbra::povray_args::{self, Job, PovSettings};
 use penumbra::render::target::TargetError;
 use penumbra::render::{AreaLightMode, LightSamples, RenderOptions, Splitting};
-use penumbra::render_job::{JobError, JobProgress, JobSettings, run_job};
+use penumbra::render_job::{FrameReport, JobError, JobProgress, JobSettings, run_job};
 use penumbra::study::reference::{
     MediaQuadrature, ReferenceRequest, render_reference, write_reference,
 };
@@ -589,16 +589,11 @@ fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
     for r in reports {
         if !job.quiet {
             eprintln!(
-                "{}: {}x{}, {} spp{}, {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
+                "{}: {}x{}, {}, {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
                 r.output.display(),
                 r.width,
                 r.height,
-                job.sampling.spp,
-                if job.sampling.adaptive {
-                    " adaptive"
-                } else {
-                    ""
-                },
+                sampling_summary(job, settings, &r),
                 r.stats.wall.as_secs_f64(),
                 r.stats.samples,
                 r.stats.rays_per_second() / 1e6,
@@ -610,6 +605,28 @@ fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// How the frame was sampled, for its summary line.
+fn sampling_summary(job: &Job, settings: &JobSettings, r: &FrameReport) -> String {
+    if let Some(t) = &settings.base.target_error {
+        let pixels = (r.width * r.height).max(1) as f64;
+        let goal = if t.relative {
+            format!("{}%", t.value * 100.0)
+        } else {
+            t.value.to_string()
+        };
+        return format!(
+            "target error {goal}: {:.1} spp on average",
+            r.stats.samples as f64 / pixels
+        );
+    }
+    let adaptive = if job.sampling.adaptive {
+        " adaptive"
+    } else {
+        ""
+    };
+    format!("{} spp{adaptive}", job.sampling.spp)
 }
 
 impl RenderArgs {
