@@ -457,10 +457,11 @@ fn povray(args: &[String]) -> Result<ExitCode, String> {
     }
     let settings = JobSettings {
         allow_write: job.allow_write.clone(),
+        resume: job.resume,
         ..JobSettings::default()
     };
     catch_interrupts();
-    render_job(&job, &settings)
+    render_job(&job, &settings, "+C")
 }
 
 fn run(cli: Cli) -> Result<ExitCode, String> {
@@ -494,7 +495,7 @@ fn render(args: RenderArgs) -> Result<ExitCode, String> {
             .clone()
             .map(|p| (p, std::time::Duration::from_secs_f64(args.preview_every))),
     };
-    render_job(&job, &settings)
+    render_job(&job, &settings, "--resume")
 }
 
 /// Merges shards into the image (and the variance, if asked).
@@ -572,7 +573,8 @@ fn parse_target(s: &str) -> Result<(f64, bool), String> {
 }
 
 /// Runs a job with a progress bar over frames and samples, and a summary line per frame.
-fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
+/// `resume` is the option that continues it, in the command line's own style.
+fn render_job(job: &Job, settings: &JobSettings, resume: &str) -> Result<ExitCode, String> {
     let bar = progress_bar(!job.quiet && std::io::stderr().is_terminal());
     let progress = Bar(bar.clone());
     let reports = run_job(job, settings, &progress);
@@ -581,7 +583,7 @@ fn render_job(job: &Job, settings: &JobSettings) -> Result<ExitCode, String> {
         Ok(r) => r,
         Err(e @ JobError::Interrupted { .. }) => {
             eprintln!("{e}");
-            eprintln!("to continue: {} --resume", command_line());
+            eprintln!("to continue: {} {resume}", command_line());
             return Ok(ExitCode::from(130));
         }
         Err(JobError::Failed(m)) => return Err(m),
@@ -998,7 +1000,7 @@ fn catch_interrupts() {
 /// This process's command line, quoted where a shell needs it, without a --resume.
 fn command_line() -> String {
     std::env::args()
-        .filter(|a| a != "--resume")
+        .filter(|a| a != "--resume" && a != "+C")
         .map(|a| {
             if a.is_empty() || a.contains(|c: char| c.is_whitespace() || "'\"$`\\*?".contains(c)) {
                 format!("'{}'", a.replace('\'', "'\\''"))

@@ -335,3 +335,26 @@ fn a_preview_is_written_and_the_image_is_unchanged() {
     let image = penumbra::output::read_image(&preview).expect("a PNG preview");
     assert_eq!((image.width, image.height), (96, 72));
 }
+
+#[test]
+fn povray_switches_interrupt_and_continue_with_plus_c() {
+    let temp = TempDir::new("farm-plus-c").expect("temp dir");
+    let dir = temp.path();
+    let whole = dir.join("whole.png");
+    ok(long_render(&whole, &[]).output().expect("runs"));
+    let out = dir.join("pov.png");
+    let povray_style = |extra: &[&str]| {
+        let mut c = penumbra();
+        c.args(["render", &scene("soft_shadow.pov"), "+W320", "+H240", "-V"])
+            .args(["--spp", "64", "--seed", "3", "+WT1"])
+            .arg(format!("+O{}", out.display()))
+            .args(extra);
+        c
+    };
+    let (o, _) = interrupt(povray_style(&[]), arbitrary_delay(0.1, 1.0), "-INT");
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert_eq!(o.status.code(), Some(130), "{err}");
+    assert!(err.trim_end().ends_with("+C"), "{err}");
+    ok(povray_style(&["+C"]).output().expect("runs"));
+    assert_eq!(std::fs::read(&out).unwrap(), std::fs::read(&whole).unwrap());
+}

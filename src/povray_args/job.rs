@@ -76,6 +76,8 @@ pub struct Job {
     pub library_paths: Vec<PathBuf>,
     pub quiet: bool,
     pub allow_write: Option<PathBuf>,
+    /// `+C`: continue from the checkpoint.
+    pub resume: bool,
     pub notes: Vec<String>,
     /// penumbra's `--motion-blur N`: times per frame spread over its shutter (1: none).
     pub motion_blur: u32,
@@ -113,6 +115,7 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
         library_paths: settings.library_paths.clone(),
         quiet: settings.quiet,
         allow_write: settings.allow_write.clone(),
+        resume: settings.continue_trace,
         notes: settings.notes.clone(),
         motion_blur: settings.motion_blur,
     })

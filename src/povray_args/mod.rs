@@ -109,6 +109,8 @@ pub struct PovSettings {
     pub quiet: bool,
     /// `--allow-write DIR`.
     pub allow_write: Option<PathBuf>,
+    /// `+C`: continue an interrupted render from its checkpoint.
+    pub continue_trace: bool,
     /// `--motion-blur N`.
     pub motion_blur: u32,
     /// One line per option accepted that does not apply.
@@ -138,6 +140,7 @@ impl Default for PovSettings {
             seed: 0,
             quiet: false,
             allow_write: None,
+            continue_trace: false,
             motion_blur: 1,
             notes: Vec::new(),
         }
@@ -464,6 +467,7 @@ impl Reader<'_> {
             Setting::SubsetEndFrame => a.subset_end = Some(bound(value)?),
             Setting::CyclicAnimation => a.cyclic = flag(switch_on, value, true)?,
             Setting::FrameStep => a.frame_step = integer(value)?.max(1),
+            Setting::ContinueTrace => s.continue_trace = flag(switch_on, value, true)?,
             Setting::Verbose => {
                 if !flag(switch_on, value, true)? {
                     s.quiet = true;

@@ -38,6 +38,8 @@ pub enum Setting {
     FrameStep,
     Display,
     Verbose,
+    /// `+C`: resume from the checkpoint.
+    ContinueTrace,
     PauseWhenDone,
     /// penumbra's own: write only the window (`--crop`).
     Crop,
@@ -426,8 +428,11 @@ pub const OPTIONS: &[PovOption] = &[
     opt(
         "C",
         "Continue_Trace",
-        NotApplicable,
-        ["resume an interrupted render", IGNORED],
+        ContinueTrace,
+        [
+            "resume an interrupted render",
+            "continues from the checkpoint an interrupted render left beside its output (like `--resume`; docs/farm.md)",
+        ],
     ),
     opt(
         "UA",
