@@ -77,11 +77,14 @@ pub fn compile(expr: &Expr, arity: usize) -> R<Program> {
         pigments: Vec::new(),
     };
     let result = e.operand(&expr)?;
+    let slots = base + e.most;
+    let mut preset = vec![0.0; super::run_size(slots)];
+    preset[arity..base].copy_from_slice(&e.consts);
     Ok(Program {
         arity: arity as u8,
-        slots: (base + e.most) as u8,
+        slots: slots as u8,
         result,
-        consts: e.consts.into(),
+        preset: preset.into(),
         code: e.code.into(),
         calls: e.calls.into(),
         patterns: e.patterns.into(),
@@ -275,8 +278,17 @@ fn product(e: &Expr) -> Option<(&Expr, &Expr)> {
 }
 
 impl Emitter {
-    /// `a + b` or `a - b` where one side is a product, as one operation.
+    /// `a + b` or `a - b` where one side is a product, or both are, as one operation.
     fn fused(&mut self, f: Math2, a: &Expr, b: &Expr) -> R<u8> {
+        if let (Some((x, y)), Some((z, w))) = (product(a), product(b)) {
+            let (slots, d) = self.operands([x, y, z, w])?;
+            self.code.push(if f == Math2::Add {
+                Op::MulMulAdd(slots, d)
+            } else {
+                Op::MulMulSub(slots, d)
+            });
+            return Ok(d);
+        }
         let (x, y, c, op): (_, _, _, fn([u8; 3], u8) -> Op) = match (product(a), product(b)) {
             (Some((x, y)), _) if f == Math2::Add => (x, y, b, Op::MulAdd),
             (Some((x, y)), _) => (x, y, b, Op::MulSub),

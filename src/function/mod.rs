@@ -24,6 +24,15 @@ use crate::scene::{Pattern, Pigment, Transform};
 /// larger expressions.
 pub const MAX_SLOTS: usize = 64;
 
+/// The slot array `Program::run` uses for a program of `slots` slots.
+fn run_size(slots: usize) -> usize {
+    match slots {
+        0..=16 => 16,
+        17..=32 => 32,
+        _ => MAX_SLOTS,
+    }
+}
+
 /// Most parameters a function may take (POV-Ray's own limit is lower in practice).
 pub const MAX_PARAMS: usize = 16;
 
@@ -50,7 +59,10 @@ pub struct Program {
     /// Slots the code uses, and the one holding the value at the end.
     slots: u8,
     result: u8,
-    consts: Box<[f64]>,
+    /// The slots as evaluation starts, before the arguments: the constants in place, the
+    /// rest 0, as long as the array `run` uses (one fixed-size copy instead of zeroing and
+    /// a loop over the constants).
+    preset: Box<[f64]>,
     code: Box<[Op]>,
     calls: Box<[std::sync::Arc<Program>]>,
     /// `pattern { ... }` blocks: the pattern and the transforms written in the block.
@@ -133,6 +145,9 @@ enum Op {
     MulAdd([u8; 3], u8),
     MulSub([u8; 3], u8),
     SubMul([u8; 3], u8),
+    /// a * b + c * d and a * b - c * d (polynomials are sums of such pairs).
+    MulMulAdd([u8; 4], u8),
+    MulMulSub([u8; 4], u8),
     Math1(Math1, u8, u8),
     Math2(Math2, u8, u8, u8),
     /// Selector, the alternatives, result.
@@ -153,11 +168,11 @@ enum Op {
 impl Program {
     /// The function's value; `args` has exactly `arity` values.
     pub fn eval(&self, args: &[f64]) -> f64 {
-        // A small array for small functions: zeroing the largest on every call would cost
+        // A small array for small functions: copying the largest on every call would cost
         // more than a short function's arithmetic.
-        match self.slots {
-            0..=16 => self.run::<16>(args),
-            17..=32 => self.run::<32>(args),
+        match self.preset.len() {
+            16 => self.run::<16>(args),
+            32 => self.run::<32>(args),
             _ => self.run::<MAX_SLOTS>(args),
         }
     }
@@ -176,14 +191,17 @@ impl Program {
         // them changes nothing and lets the compiler drop the bounds checks.
         let at = |i: usize| i & (N - 1);
         let mut s = [0.0f64; N];
+        s.copy_from_slice(&self.preset[..N]);
         // Indexed copies: for a handful of values they beat both memcpy and iterator
         // adapters.
         let arity = usize::from(self.arity).min(args.len());
-        for i in 0..arity {
-            s[at(i)] = args[i];
-        }
-        for (i, k) in self.consts.iter().enumerate() {
-            s[at(arity + i)] = *k;
+        if let ([x, y, z], 3) = (args, self.arity) {
+            // Isosurfaces and function patterns: x, y, z, without a loop.
+            (s[0], s[1], s[2]) = (*x, *y, *z);
+        } else {
+            for i in 0..arity {
+                s[at(i)] = args[i];
+            }
         }
         let at = |i: u8| at(usize::from(i));
         for op in self.code.iter() {
@@ -199,6 +217,12 @@ impl Program {
                 Op::MulAdd([a, b, c], d) => s[at(d)] = s[at(a)] * s[at(b)] + s[at(c)],
                 Op::MulSub([a, b, c], d) => s[at(d)] = s[at(a)] * s[at(b)] - s[at(c)],
                 Op::SubMul([a, b, c], d) => s[at(d)] = s[at(c)] - s[at(a)] * s[at(b)],
+                Op::MulMulAdd([a, b, c, e], d) => {
+                    s[at(d)] = s[at(a)] * s[at(b)] + s[at(c)] * s[at(e)];
+                }
+                Op::MulMulSub([a, b, c, e], d) => {
+                    s[at(d)] = s[at(a)] * s[at(b)] - s[at(c)] * s[at(e)];
+                }
                 other => self.exec(other, &mut s, args),
             }
         }
@@ -219,7 +243,9 @@ impl Program {
             | Op::Copy(..)
             | Op::MulAdd(..)
             | Op::MulSub(..)
-            | Op::SubMul(..) => {
+            | Op::SubMul(..)
+            | Op::MulMulAdd(..)
+            | Op::MulMulSub(..) => {
                 debug_assert!(false, "arithmetic runs in `run`");
             }
             Op::Math1(f, a, d) => w(s, d, math1(f, g(s, a))),
@@ -415,5 +441,7 @@ impl Channel {
     }
 }
 
+#[cfg(test)]
+mod compile_tests;
 #[cfg(test)]
 mod tests;

@@ -1,0 +1,45 @@
+//! The compiler's fused operations and slot layout give what the plain expression gives.
+
+use super::*;
+
+fn arg(i: u8) -> Box<Expr> {
+    Box::new(Expr::Arg(i))
+}
+
+fn op(f: Math2, a: Box<Expr>, b: Box<Expr>) -> Box<Expr> {
+    Box::new(Expr::Math2(f, a, b))
+}
+
+#[test]
+fn sums_and_differences_of_two_products_are_fused_and_exact() {
+    // x*y + z*w and x*y - z*w, with values whose products round.
+    for f in [Math2::Add, Math2::Sub] {
+        let e = op(
+            f,
+            op(Math2::Mul, arg(0), arg(1)),
+            op(Math2::Mul, arg(2), arg(3)),
+        );
+        let p = compile(&e, 4).expect("compiles");
+        assert_eq!(p.code.len(), 1, "{:?}", p.code);
+        let (x, y, z, w) = (0.1, 0.7, 1.0 / 3.0, 2.0f64.sqrt());
+        let want = if f == Math2::Add {
+            x * y + z * w
+        } else {
+            x * y - z * w
+        };
+        assert_eq!(p.eval(&[x, y, z, w]).to_bits(), want.to_bits());
+    }
+}
+
+#[test]
+fn constants_keep_their_slots_when_called_with_x_y_z() {
+    // A function of u, v (arity 2) read at a point: the third coordinate must not land on
+    // the constant's slot.
+    let e = op(Math2::Add, arg(0), Box::new(Expr::Const(5.0)));
+    let p = compile(&e, 2).expect("compiles");
+    assert_eq!(p.at(glam::DVec3::new(1.0, 2.0, 100.0)), 6.0);
+    // And with exactly x, y, z for a function of three.
+    let e = op(Math2::Mul, arg(2), Box::new(Expr::Const(0.5)));
+    let p = compile(&e, 3).expect("compiles");
+    assert_eq!(p.at(glam::DVec3::new(1.0, 2.0, 8.0)), 4.0);
+}
