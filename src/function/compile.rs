@@ -5,6 +5,7 @@
 use std::sync::Arc;
 
 use super::{Channel, Internal, MAX_PARAMS, MAX_SLOTS, Math1, Math2, Op, Program};
+use crate::scene::path_spline::PathSpline;
 use crate::scene::{Pattern, Pigment, Transform};
 
 /// A function body as the parser reads it.
@@ -22,6 +23,8 @@ pub enum Expr {
     /// A pattern read at the point the three expressions give.
     Pattern(Box<(Transform, Pattern)>, Vec<Expr>),
     Pigment(Box<Pigment>, Channel, Vec<Expr>),
+    /// A spline's component (0 for x ... 4) at the argument.
+    Spline(Arc<PathSpline>, u8, Box<Expr>),
     /// `sum(i, from, to, body)` or `prod`: `body` sees the caller's parameters and then i.
     Fold {
         product: bool,
@@ -75,6 +78,7 @@ pub fn compile(expr: &Expr, arity: usize) -> R<Program> {
         calls: Vec::new(),
         patterns: Vec::new(),
         pigments: Vec::new(),
+        splines: Vec::new(),
     };
     let result = e.operand(&expr)?;
     let slots = base + e.most;
@@ -89,6 +93,7 @@ pub fn compile(expr: &Expr, arity: usize) -> R<Program> {
         calls: e.calls.into(),
         patterns: e.patterns.into(),
         pigments: e.pigments.into(),
+        splines: e.splines.into(),
     })
 }
 
@@ -102,7 +107,7 @@ fn collect_constants(e: &Expr, out: &mut Vec<f64>) {
     match e {
         Expr::Const(c) => add(*c),
         Expr::Arg(_) => {}
-        Expr::Neg(a) | Expr::Math1(_, a) => collect_constants(a, out),
+        Expr::Neg(a) | Expr::Math1(_, a) | Expr::Spline(_, _, a) => collect_constants(a, out),
         Expr::Math2(_, a, b) => {
             collect_constants(a, out);
             collect_constants(b, out);
@@ -131,6 +136,7 @@ struct Emitter {
     calls: Vec<Arc<Program>>,
     patterns: Vec<(Transform, Pattern)>,
     pigments: Vec<Pigment>,
+    splines: Vec<Arc<PathSpline>>,
 }
 
 impl Emitter {
@@ -244,6 +250,11 @@ impl Emitter {
                 self.pigments.push((**p).clone());
                 (Op::Pigment(self.pigments.len() as u32 - 1, *ch, a, d), d)
             }
+            Expr::Spline(spline, c, t) => {
+                let ([a], d) = self.operands([&**t])?;
+                self.splines.push(spline.clone());
+                (Op::Spline(self.splines.len() as u32 - 1, *c, a, d), d)
+            }
             Expr::Fold {
                 product,
                 from,
@@ -342,6 +353,7 @@ fn fold(e: &Expr) -> Expr {
         Expr::Pigment(p, ch, args) => {
             Expr::Pigment(p.clone(), *ch, args.iter().map(fold).collect())
         }
+        Expr::Spline(s, c, t) => Expr::Spline(s.clone(), *c, Box::new(fold(t))),
         Expr::Fold {
             product,
             from,

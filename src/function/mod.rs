@@ -18,6 +18,7 @@ use glam::DVec3;
 pub use compile::{CompileError, Expr, compile};
 pub use internal::Internal;
 
+use crate::scene::path_spline::PathSpline;
 use crate::scene::{Pattern, Pigment, Transform};
 
 /// Slots (parameters, constants, temporaries) a program may use; the compiler refuses
@@ -50,6 +51,8 @@ pub enum Body {
     Float(std::sync::Arc<Program>),
     /// `function { pigment { ... } }`: called with x, y, z, it gives the pigment's colour.
     Pigment(std::sync::Arc<Pigment>),
+    /// `function { spline { ... } }`: called with t, it gives the spline's vector.
+    Spline(std::sync::Arc<PathSpline>),
 }
 
 /// One function's code, with the side tables its operations index.
@@ -68,6 +71,7 @@ pub struct Program {
     /// `pattern { ... }` blocks: the pattern and the transforms written in the block.
     patterns: Box<[(Transform, Pattern)]>,
     pigments: Box<[Pigment]>,
+    splines: Box<[std::sync::Arc<PathSpline>]>,
 }
 
 /// Float functions of one argument.
@@ -159,6 +163,8 @@ enum Op {
     /// Pattern, first of the x, y, z slots, result.
     Pattern(u32, u8, u8),
     Pigment(u32, Channel, u8, u8),
+    /// Spline, component, the slot of t, result.
+    Spline(u32, u8, u8, u8),
     /// `sum(i, a, b, expr)` and `prod`: the callee (whose last parameter is i) runs for
     /// i = a, a + 1, ... <= b, with the caller's parameters before i.
     Sum(u32, u8, u8, u8),
@@ -285,6 +291,10 @@ impl Program {
             Op::Pigment(i, ch, a, d) => {
                 let v = channel(&self.pigments[i as usize], point(s, a), ch);
                 w(s, d, v);
+            }
+            Op::Spline(i, c, a, d) => {
+                let v = self.splines[i as usize].at(g(s, a), None);
+                w(s, d, v[usize::from(c).min(4)]);
             }
             Op::Sum(i, a, b, d) => w(s, d, self.fold(i, args, (g(s, a), g(s, b)), false)),
             Op::Prod(i, a, b, d) => w(s, d, self.fold(i, args, (g(s, a), g(s, b)), true)),

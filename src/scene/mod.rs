@@ -9,6 +9,7 @@ mod julia;
 mod light;
 mod media;
 mod object;
+pub mod path_spline;
 pub mod spline;
 pub mod text;
 mod texture;

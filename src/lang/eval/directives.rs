@@ -478,11 +478,19 @@ impl Evaluator<'_> {
             return self.declare_element(&name, &id, span);
         }
         self.expect(Punct::Eq, &format!("after `{name}`"))?;
+        // A `#local` belongs to the scope it is written in, not to a macro the value calls:
+        // that macro's scope is still open while its last tokens are read (`#local M =
+        // Matrix_Trans(...)` in transforms.inc's Spline_Trans).
+        let scope = self.scopes.len() - 1;
         let value = self.declared_value_tolerant()?;
         // Assign before looking for the optional `;`: looking past the end of a macro body
         // closes the macro's scope, and a parameter passed by reference must be written
         // while that scope still exists (e.g. `#declare Stuff = object { Stuff ... } #end`).
-        self.assign(name, value, local);
+        if local {
+            self.assign_local(name, value, scope);
+        } else {
+            self.assign(name, value, false);
+        }
         self.eat_declare_semicolon();
         Ok(())
     }

@@ -414,6 +414,11 @@ impl Evaluator<'_> {
             if let Value::Function(f) = &v {
                 return self.call_declared_function(tok, f);
             }
+            if let Value::Spline(s) = &v
+                && self.peek()?.is_punct(Punct::LParen)
+            {
+                return self.call_spline(tok, s);
+            }
             return Ok((v, span));
         }
         match functions::builtin(name) {

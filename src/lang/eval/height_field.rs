@@ -119,6 +119,9 @@ impl Evaluator<'_> {
             ));
         }
         let body = self.function_after_keyword(span)?.body;
+        if let crate::function::Body::Spline(_) = body {
+            return Err(self.err(span, "a spline function gives a vector; a height field needs a float or pigment function"));
+        }
         let (columns, rows) = (w as usize, h as usize);
         let heights = HeightField::sample(columns, rows, |i, j| {
             let x = i as f64 / (columns - 1) as f64;
@@ -132,6 +135,7 @@ impl Evaluator<'_> {
                     let c = crate::appearance::evaluate_pigment(pig, p).rgb;
                     0.297 * c.x + 0.589 * c.y + 0.114 * c.z
                 }
+                crate::function::Body::Spline(_) => unreachable!("refused above"),
             };
             if (0.0..=1.0).contains(&v) {
                 v

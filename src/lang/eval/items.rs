@@ -178,6 +178,7 @@ impl Evaluator<'_> {
             }
             "array" => self.array_value()?,
             "function" => Value::Function(std::rc::Rc::new(self.function_value()?)),
+            "spline" => Value::Spline(std::rc::Rc::new(self.spline_value()?)),
             _ if super::keywords::is_keyword(word)
                 && !super::keywords::is_expression_keyword(word) =>
             {

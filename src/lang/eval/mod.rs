@@ -25,6 +25,7 @@ mod keywords;
 mod media;
 mod meshes;
 mod objects;
+mod path_splines;
 mod placement;
 mod poly;
 mod stream;

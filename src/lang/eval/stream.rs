@@ -406,6 +406,16 @@ impl Evaluator<'_> {
         self.scopes[index].insert(name, value);
     }
 
+    /// `#local`: into scope `index` (the one the directive was written in), or the
+    /// innermost if that has closed meanwhile.
+    pub(super) fn assign_local(&mut self, name: Rc<str>, value: Value, index: usize) {
+        if value.needs_check_in_stream() {
+            self.special_names = true;
+        }
+        let index = index.min(self.scopes.len() - 1);
+        self.scopes[index].insert(name, value);
+    }
+
     /// Skips a false branch: tokens up to the `#else`/`#elseif`/`#end` (or `#case`...) that
     /// belongs to this block, consuming that directive.
     pub(super) fn skip_branch(&mut self, start: Span) -> Result<SkipStop, Diagnostic> {

@@ -53,6 +53,10 @@ impl Evaluator<'_> {
         let body = r?;
         self.expect(Punct::RBrace, "to close the function")?;
         let mut names = params.names;
+        if let Body::Spline(_) = &body {
+            // A spline function takes the time alone.
+            names.truncate(1);
+        }
         // `internal(N)` takes more parameters than x, y, z; they have no names.
         if let Body::Float(p) = &body {
             for i in names.len()..usize::from(p.arity) {
@@ -74,6 +78,10 @@ impl Evaluator<'_> {
             Body::Pigment(_) => Err(self.err(
                 tok.span,
                 "a pigment function gives a colour; a float function is needed here",
+            )),
+            Body::Spline(_) => Err(self.err(
+                tok.span,
+                "a spline function gives a vector; a float function is needed here",
             )),
         }
     }
@@ -122,6 +130,10 @@ impl Evaluator<'_> {
                 self.next()?;
                 let p = self.pigment_body(crate::scene::Pigment::default())?;
                 return Ok(Body::Pigment(Arc::new(p)));
+            }
+            Some("spline") => {
+                let s = self.spline_value()?;
+                return Ok(Body::Spline(Arc::new(s)));
             }
             Some("pattern") => {
                 self.next()?;
@@ -342,6 +354,15 @@ impl Evaluator<'_> {
                 })?;
                 Ok(Expr::Pigment(Box::new((**p).clone()), ch, args))
             }
+            Body::Spline(s) => {
+                self.expect(Punct::Dot, &format!("after `{name}(...)`: a spline function gives a vector; read a component like `.y`"))?;
+                let field = self.next()?;
+                let c = field.ident().and_then(vector_component).ok_or_else(|| {
+                    self.expected("a vector component (`x`, `y`, `z`, `t`)", &field)
+                })?;
+                let t = args.into_iter().next().expect("one argument");
+                Ok(Expr::Spline(s.clone(), c, Box::new(t)))
+            }
         }
     }
 
@@ -443,6 +464,7 @@ impl Evaluator<'_> {
                 let c = crate::appearance::evaluate_pigment(p, at);
                 Value::Colour([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit])
             }
+            Body::Spline(s) => super::path_splines::spline_vector(s, args[0], None),
         };
         Ok((v, span))
     }
@@ -458,4 +480,16 @@ impl Evaluator<'_> {
         }
         self.expect(Punct::RParen, "to close the call")
     }
+}
+
+/// A vector component by name, as `.x` reads it: x, y, z, t and the colour names.
+fn vector_component(name: &str) -> Option<u8> {
+    Some(match name {
+        "x" | "u" | "red" => 0,
+        "y" | "v" | "green" => 1,
+        "z" | "blue" => 2,
+        "t" | "filter" => 3,
+        "transmit" => 4,
+        _ => return None,
+    })
 }

@@ -100,6 +100,7 @@ pub enum Value {
     Media(Box<crate::scene::Media>),
     Array(Rc<std::cell::RefCell<ArrayValue>>),
     Function(Rc<crate::function::Function>),
+    Spline(Rc<crate::scene::path_spline::PathSpline>),
     /// A declaration that used a feature penumbra lacks. Include files declare many things
     /// a scene never uses, so the error waits until the identifier is used.
     Unsupported(Rc<super::super::diagnostics::Diagnostic>),
@@ -137,6 +138,7 @@ impl Value {
             Value::Media(_) => "a media",
             Value::Array(_) => "an array",
             Value::Function(_) => "a function",
+            Value::Spline(_) => "a spline",
             Value::Unsupported(_) => "an unsupported value",
         }
     }
