@@ -163,6 +163,10 @@ impl Evaluator<'_> {
                 self.next()?;
                 Value::Interior(self.interior_body(crate::scene::Interior::default())?)
             }
+            "normal" => {
+                self.next()?;
+                Value::Normal(Box::new(self.normal_body(None)?))
+            }
             "material" => {
                 self.next()?;
                 let mut holder = crate::scene::Object::new(crate::scene::Shape::Union(Vec::new()));

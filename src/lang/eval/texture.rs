@@ -711,6 +711,12 @@ impl Evaluator<'_> {
             let Some(word) = tok.ident().map(str::to_string) else {
                 return Err(self.stray_in_block(&tok, "the normal"));
             };
+            if let Some(Value::Normal(named)) = self.lookup(&word) {
+                // `normal { Named ... }`: the declared normal, modified by what follows.
+                n = (**named).clone();
+                self.next()?;
+                continue;
+            }
             match word.as_str() {
                 "average" => return Err(self.unsupported(&tok, "average normal_map")),
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
@@ -722,6 +728,9 @@ impl Evaluator<'_> {
                     self.eat(Punct::Comma)?;
                     if self.starts_float()? {
                         normal.amount = self.float()?;
+                    }
+                    if let Some(count) = normal.pattern.kind.list_size() {
+                        normal.normal_map = self.normal_list_entries(count)?;
                     }
                     n = Some(normal);
                 }
@@ -774,6 +783,26 @@ impl Evaluator<'_> {
                 }
             }
         }
+    }
+
+    /// `checker normal {A} normal {B}`: a list pattern's normals, as a normal map at the
+    /// pattern's values 0, 1, 2 (which the list patterns give exactly), so each cell takes
+    /// its own entry whole. No entries: the pattern tilts by itself.
+    fn normal_list_entries(&mut self, count: usize) -> R<Vec<(f64, Normal)>> {
+        let mut entries = Vec::new();
+        while entries.len() < count && self.peek()?.is_ident("normal") {
+            let kw = self.next()?;
+            // POV-Ray refuses an empty entry too ("No normal type").
+            let n = self.normal_body(None)?.ok_or_else(|| {
+                self.err(
+                    kw.span,
+                    "a list pattern's normal entry needs a pattern (POV-Ray: \"No normal type\")",
+                )
+            })?;
+            entries.push((entries.len() as f64, n));
+            self.eat(Punct::Comma)?;
+        }
+        Ok(entries)
     }
 
     /// `{ [v, <height, slope>] ... }` after `slope_map`, sorted as written.

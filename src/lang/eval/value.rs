@@ -89,6 +89,8 @@ pub enum Value {
     Camera(Box<CameraSpec>),
     Pigment(Box<Pigment>),
     Finish(Box<Finish>),
+    /// A declared `normal { }` (None: one that perturbs nothing).
+    Normal(Box<Option<crate::scene::Normal>>),
     Texture(Box<Texture>),
     Interior(Interior),
     /// A `material`: the texture and interior it sets, if any.
@@ -138,6 +140,7 @@ impl Value {
             Value::Media(_) => "a media",
             Value::Array(_) => "an array",
             Value::Function(_) => "a function",
+            Value::Normal(_) => "a normal",
             Value::Spline(_) => "a spline",
             Value::Unsupported(_) => "an unsupported value",
         }
