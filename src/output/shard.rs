@@ -86,6 +86,12 @@ impl Fnv {
         }
     }
 
+    /// Bytes and then a separator, so that ("ab", "c") and ("a", "bc") differ.
+    pub fn write_field(&mut self, bytes: &[u8]) {
+        self.write(bytes);
+        self.write(&[0xff]);
+    }
+
     pub fn finish(&self) -> u64 {
         self.0
     }

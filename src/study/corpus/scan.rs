@@ -2,6 +2,7 @@
 //! cache key of its POV-Ray reference, whether its textures use POV-Ray's noise, and the INI
 //! file it comes with.
 
+use crate::output::Fnv;
 use crate::study::media_quadrature;
 use crate::study::reference::MediaQuadrature;
 use std::collections::BTreeSet;
@@ -278,41 +279,35 @@ pub fn ini_args(ini: &Path) -> Vec<String> {
 
 /// When the INI animates, the switches that render only its first frame (`+SF +EF`, so the
 /// clock stays the animation's initial clock).
+/// The frames may be given as keys (`Final_Frame=20`) or as switches on a line
+/// (`+kff20`, as animations/splinefollow's INI does).
 pub fn first_frame_args(ini: &Path) -> Vec<String> {
     let text = read_lossy(ini).unwrap_or_default();
-    if ini_value(&text, "Final_Frame").is_none() {
+    if ini_value(&text, "Final_Frame")
+        .or_else(|| ini_switch(&text, "KFF"))
+        .is_none()
+    {
         return Vec::new();
     }
     let first = ini_value(&text, "Initial_Frame")
+        .or_else(|| ini_switch(&text, "KFI"))
         .and_then(|v| v.parse::<i64>().ok())
         .unwrap_or(1);
     vec![format!("+SF{first}"), format!("+EF{first}")]
 }
 
-/// 64-bit FNV-1a, stable across builds and platforms (std's hasher is not promised to be).
-#[derive(Debug, Clone, Copy)]
-pub struct Fnv(u64);
-
-impl Default for Fnv {
-    fn default() -> Self {
-        Fnv(0xcbf2_9ce4_8422_2325)
-    }
-}
-
-impl Fnv {
-    pub fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 ^= u64::from(b);
-            self.0 = self.0.wrapping_mul(0x0100_0000_01b3);
-        }
-        // A separator, so that ("ab", "c") and ("a", "bc") differ.
-        self.0 ^= 0xff;
-        self.0 = self.0.wrapping_mul(0x0100_0000_01b3);
-    }
-
-    pub fn finish(&self) -> u64 {
-        self.0
-    }
+/// The value of a switch (`+KFF20`, `-kff20`: `20`) written in an INI's lines.
+fn ini_switch(text: &str, name: &str) -> Option<String> {
+    text.lines()
+        .map(|l| l.split(';').next().unwrap_or(""))
+        .flat_map(str::split_whitespace)
+        .filter_map(|w| w.strip_prefix('+').or_else(|| w.strip_prefix('-')))
+        .find(|w| {
+            w.len() > name.len()
+                && w.get(..name.len())
+                    .is_some_and(|p| p.eq_ignore_ascii_case(name))
+        })
+        .map(|w| w[name.len()..].to_string())
 }
 
 /// What a cached reference depends on.
@@ -331,22 +326,22 @@ impl ReferenceKey<'_> {
     /// The cache file's name: the scene's path with `/` as `_`, then the hash.
     pub fn file_name(&self, scene: &str) -> String {
         let mut h = Fnv::default();
-        h.write(b"penumbra corpus reference v1");
-        h.write(self.povray_version.as_bytes());
-        h.write(format!("{}x{} k={}", self.width, self.height, self.supersample).as_bytes());
+        h.write_field(b"penumbra corpus reference v1");
+        h.write_field(self.povray_version.as_bytes());
+        h.write_field(format!("{}x{} k={}", self.width, self.height, self.supersample).as_bytes());
         // As-written keys are those of before the option existed, so their caches stay valid.
         if self.media == MediaQuadrature::Converged {
-            h.write(media_quadrature::CONVERGED_SETTINGS.as_bytes());
+            h.write_field(media_quadrature::CONVERGED_SETTINGS.as_bytes());
         }
         for arg in self.extra_args {
-            h.write(arg.as_bytes());
+            h.write_field(arg.as_bytes());
             if let Ok(text) = std::fs::read(arg) {
-                h.write(&text);
+                h.write_field(&text);
             }
         }
         for file in self.files {
-            h.write(file.path.to_string_lossy().as_bytes());
-            h.write(file.text.as_bytes());
+            h.write_field(file.path.to_string_lossy().as_bytes());
+            h.write_field(file.text.as_bytes());
         }
         format!("{}-{:016x}.exr", flat_name(scene), h.finish())
     }

@@ -73,6 +73,18 @@ fn inis_give_the_first_frame() {
         ini_args(&ini),
         vec![ini.display().to_string(), "+SF3".into(), "+EF3".into()]
     );
+    // Frames as switches on a line (animations/splinefollow.ini), or not at all.
+    let switches = dir.path().join("c.ini");
+    std::fs::write(
+        &switches,
+        "Antialias=On\n+kf0.1666 +kff20 +kc declare=fp=0\n",
+    )
+    .expect("ini");
+    assert_eq!(first_frame_args(&switches), vec!["+SF1", "+EF1"]);
+    std::fs::write(&switches, "+KFI4 +KFF9\n").expect("ini");
+    assert_eq!(first_frame_args(&switches), vec!["+SF4", "+EF4"]);
+    std::fs::write(&switches, "Antialias=On\n+kf0.5 ; +kff20\n").expect("ini");
+    assert!(first_frame_args(&switches).is_empty());
 }
 
 #[test]
