@@ -3,12 +3,23 @@
 //! `#debug` for the installed functions.inc; the tests in ../tests.rs hold those values.
 //! The numbers not listed here are refused with a positioned error when used.
 
+mod algebraic;
+mod helix;
+
 use glam::DVec3;
+
+pub use algebraic::Field;
 
 use crate::appearance::noise::noise_with;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Internal {
+    /// A field-strength algebraic surface (see algebraic.rs).
+    Field(Field),
+    /// 25: POV-Ray's f_helix1.
+    Helix1,
+    /// 26: POV-Ray's f_helix2.
+    Helix2,
     /// 17: sqrt((P0 x)² + (P1 y)² + (P2 z)²) (POV-Ray subtracts nothing: the scenes use
     /// threshold 1).
     Ellipsoid,
@@ -36,6 +47,41 @@ pub enum Internal {
 
 /// Number, internal function and its parameter count (x, y, z included).
 const TABLE: &[(u32, Internal, usize)] = &[
+    (4, Internal::Field(Field::Bicorn), 5),
+    (5, Internal::Field(Field::Bifolia), 5),
+    (11, Internal::Field(Field::CrossedTrough), 4),
+    (12, Internal::Field(Field::CubicSaddle), 4),
+    (13, Internal::Field(Field::Cushion), 4),
+    (14, Internal::Field(Field::DevilsCurve), 4),
+    (20, Internal::Field(Field::FoliumSurface), 6),
+    (22, Internal::Field(Field::Glob), 4),
+    (23, Internal::Field(Field::Heart), 4),
+    (25, Internal::Helix1, 10),
+    (26, Internal::Helix2, 10),
+    (30, Internal::Field(Field::HuntSurface), 4),
+    (31, Internal::Field(Field::HyperbolicTorus), 6),
+    (33, Internal::Field(Field::KampyleOfEudoxus), 6),
+    (35, Internal::Field(Field::KleinBottle), 4),
+    (36, Internal::Field(Field::KummerV1), 4),
+    (37, Internal::Field(Field::KummerV2), 7),
+    (38, Internal::Field(Field::LemniscateOfGerono), 4),
+    (41, Internal::Field(Field::Mitre), 4),
+    (42, Internal::Field(Field::NodalCubic), 4),
+    (43, Internal::Field(Field::Cushion), 4),
+    (44, Internal::Field(Field::OvalsOfCassini), 7),
+    (45, Internal::Field(Field::Paraboloid), 4),
+    (46, Internal::Field(Field::ParabolicTorus), 6),
+    (48, Internal::Field(Field::Pillow), 4),
+    (49, Internal::Field(Field::Piriform), 4),
+    (54, Internal::Field(Field::QuarticParaboloid), 4),
+    (55, Internal::Field(Field::QuarticSaddle), 4),
+    (56, Internal::Field(Field::QuarticCylinder), 6),
+    (65, Internal::Field(Field::SteinersRoman), 4),
+    (66, Internal::Field(Field::Strophoid), 7),
+    (71, Internal::Field(Field::Torus2), 6),
+    (72, Internal::Field(Field::TorusGumdrop), 4),
+    (73, Internal::Field(Field::Umbrella), 4),
+    (74, Internal::Field(Field::WitchOfAgnesi), 5),
     (17, Internal::Ellipsoid, 6),
     (47, Internal::Ph, 3),
     (57, Internal::R, 3),
@@ -63,6 +109,9 @@ impl Internal {
     pub fn eval(self, a: &[f64]) -> f64 {
         let p = DVec3::new(a[0], a[1], a[2]);
         match self {
+            Internal::Field(f) => f.eval(p, &a[3..]),
+            Internal::Helix1 => helix::helix1(p, &a[3..]),
+            Internal::Helix2 => helix::helix2(p, &a[3..]),
             Internal::Ellipsoid => (p * DVec3::new(a[3], a[4], a[5])).length(),
             Internal::Ph => {
                 let r = p.length();
