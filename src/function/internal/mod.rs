@@ -4,11 +4,13 @@
 //! The numbers not listed here are refused with a positioned error when used.
 
 mod algebraic;
+mod curves;
 mod helix;
 
 use glam::DVec3;
 
 pub use algebraic::Field;
+pub use curves::Curve;
 
 use crate::appearance::noise::noise_with;
 
@@ -16,6 +18,8 @@ use crate::appearance::noise::noise_with;
 pub enum Internal {
     /// A field-strength algebraic surface (see algebraic.rs).
     Field(Field),
+    /// A 2-D curve extruded or turned about y (see curves.rs).
+    Curve(Curve),
     /// 25: POV-Ray's f_helix1.
     Helix1,
     /// 26: POV-Ray's f_helix2.
@@ -47,13 +51,19 @@ pub enum Internal {
 
 /// Number, internal function and its parameter count (x, y, z included).
 const TABLE: &[(u32, Internal, usize)] = &[
+    (0, Internal::Curve(Curve::AlgbrCyl1), 8),
+    (1, Internal::Curve(Curve::AlgbrCyl2), 8),
+    (2, Internal::Curve(Curve::AlgbrCyl3), 8),
+    (3, Internal::Curve(Curve::AlgbrCyl4), 8),
     (4, Internal::Field(Field::Bicorn), 5),
     (5, Internal::Field(Field::Bifolia), 5),
     (11, Internal::Field(Field::CrossedTrough), 4),
     (12, Internal::Field(Field::CubicSaddle), 4),
     (13, Internal::Field(Field::Cushion), 4),
     (14, Internal::Field(Field::DevilsCurve), 4),
+    (15, Internal::Curve(Curve::Devils), 9),
     (20, Internal::Field(Field::FoliumSurface), 6),
+    (21, Internal::Curve(Curve::Folium), 9),
     (22, Internal::Field(Field::Glob), 4),
     (23, Internal::Field(Field::Heart), 4),
     (25, Internal::Helix1, 10),
@@ -61,10 +71,12 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (30, Internal::Field(Field::HuntSurface), 4),
     (31, Internal::Field(Field::HyperbolicTorus), 6),
     (33, Internal::Field(Field::KampyleOfEudoxus), 6),
+    (34, Internal::Curve(Curve::Kampyle), 9),
     (35, Internal::Field(Field::KleinBottle), 4),
     (36, Internal::Field(Field::KummerV1), 4),
     (37, Internal::Field(Field::KummerV2), 7),
     (38, Internal::Field(Field::LemniscateOfGerono), 4),
+    (39, Internal::Curve(Curve::Lemniscate), 9),
     (41, Internal::Field(Field::Mitre), 4),
     (42, Internal::Field(Field::NodalCubic), 4),
     (43, Internal::Field(Field::Cushion), 4),
@@ -73,11 +85,13 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (46, Internal::Field(Field::ParabolicTorus), 6),
     (48, Internal::Field(Field::Pillow), 4),
     (49, Internal::Field(Field::Piriform), 4),
+    (50, Internal::Curve(Curve::Piriform), 10),
     (54, Internal::Field(Field::QuarticParaboloid), 4),
     (55, Internal::Field(Field::QuarticSaddle), 4),
     (56, Internal::Field(Field::QuarticCylinder), 6),
     (65, Internal::Field(Field::SteinersRoman), 4),
     (66, Internal::Field(Field::Strophoid), 7),
+    (67, Internal::Curve(Curve::Strophoid), 10),
     (71, Internal::Field(Field::Torus2), 6),
     (72, Internal::Field(Field::TorusGumdrop), 4),
     (73, Internal::Field(Field::Umbrella), 4),
@@ -90,6 +104,7 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (68, Internal::Superellipsoid, 5),
     (69, Internal::Th, 3),
     (70, Internal::Torus, 5),
+    (75, Internal::Curve(Curve::Witch), 9),
     (76, Internal::Noise3d, 3),
     (78, Internal::NoiseGenerator, 4),
 ];
@@ -110,6 +125,7 @@ impl Internal {
         let p = DVec3::new(a[0], a[1], a[2]);
         match self {
             Internal::Field(f) => f.eval(p, &a[3..]),
+            Internal::Curve(f) => f.eval(p, &a[3..]),
             Internal::Helix1 => helix::helix1(p, &a[3..]),
             Internal::Helix2 => helix::helix2(p, &a[3..]),
             Internal::Ellipsoid => (p * DVec3::new(a[3], a[4], a[5])).length(),
