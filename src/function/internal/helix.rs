@@ -42,3 +42,26 @@ pub fn helix2(p: DVec3, a: &[f64]) -> f64 {
     let (u, v) = rotate(p.x - major * c, p.z - major * s, -p.y * period);
     cross_section(u, v, a[5]) - minor
 }
+
+/// 64: an Archimedean spiral in the xz plane, its arms P0 apart, of thickness P1 under
+/// cross-section type P5, cut by the sphere of radius P2 (functions.inc calls P2 the outer
+/// diameter, but POV-Ray takes |p| - P2). Near the axis, where the nearest arm would be
+/// one of negative radius, the distance is to the first arm; and it never exceeds the
+/// distance to the origin, where the spiral starts. POV-Ray reads ρ = 0 as 1e-6 (its
+/// value at the origin is -P1 + 1e-6). P3 and P4 are unused.
+pub fn spiral(p: DVec3, a: &[f64]) -> f64 {
+    let (spacing, thickness, outer) = (a[0], a[1], a[2]);
+    let mut rho = p.x.hypot(p.z);
+    if rho == 0.0 {
+        rho = 1e-6;
+    }
+    let along = rho + spacing * p.z.atan2(p.x) / TAU;
+    let d = if along < 0.0 {
+        spacing / 2.0 - along
+    } else {
+        along % spacing - spacing / 2.0
+    };
+    let centre = rho.hypot(p.y);
+    let v = cross_section(d, p.y, a[5]).min(centre) - thickness;
+    v.max(p.length() - outer)
+}

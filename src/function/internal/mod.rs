@@ -6,6 +6,7 @@
 mod algebraic;
 mod curves;
 mod helix;
+mod tubes;
 
 use glam::DVec3;
 
@@ -24,6 +25,12 @@ pub enum Internal {
     Helix1,
     /// 26: POV-Ray's f_helix2.
     Helix2,
+    /// 51: POV-Ray's f_poly4.
+    Poly4,
+    /// 52: POV-Ray's f_polytubes.
+    Polytubes,
+    /// 64: POV-Ray's f_spiral.
+    Spiral,
     /// 17: sqrt((P0 x)² + (P1 y)² + (P2 z)²) (POV-Ray subtracts nothing: the scenes use
     /// threshold 1).
     Ellipsoid,
@@ -86,9 +93,12 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (48, Internal::Field(Field::Pillow), 4),
     (49, Internal::Field(Field::Piriform), 4),
     (50, Internal::Curve(Curve::Piriform), 10),
+    (51, Internal::Poly4, 8),
+    (52, Internal::Polytubes, 9),
     (54, Internal::Field(Field::QuarticParaboloid), 4),
     (55, Internal::Field(Field::QuarticSaddle), 4),
     (56, Internal::Field(Field::QuarticCylinder), 6),
+    (64, Internal::Spiral, 9),
     (65, Internal::Field(Field::SteinersRoman), 4),
     (66, Internal::Field(Field::Strophoid), 7),
     (67, Internal::Curve(Curve::Strophoid), 10),
@@ -128,6 +138,9 @@ impl Internal {
             Internal::Curve(f) => f.eval(p, &a[3..]),
             Internal::Helix1 => helix::helix1(p, &a[3..]),
             Internal::Helix2 => helix::helix2(p, &a[3..]),
+            Internal::Poly4 => tubes::poly4(p, &a[3..]),
+            Internal::Polytubes => tubes::polytubes(p, &a[3..]),
+            Internal::Spiral => helix::spiral(p, &a[3..]),
             Internal::Ellipsoid => (p * DVec3::new(a[3], a[4], a[5])).length(),
             Internal::Ph => {
                 let r = p.length();
