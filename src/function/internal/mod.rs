@@ -4,6 +4,7 @@
 //! The numbers not listed here are refused with a positioned error when used.
 
 mod algebraic;
+mod blobs;
 mod curves;
 mod helix;
 mod tubes;
@@ -21,6 +22,20 @@ pub enum Internal {
     Field(Field),
     /// A 2-D curve extruded or turned about y (see curves.rs).
     Curve(Curve),
+    /// 6: POV-Ray's f_blob.
+    Blob,
+    /// 7: POV-Ray's f_blob2.
+    Blob2,
+    /// 10: POV-Ray's f_cross_ellipsoids.
+    CrossEllipsoids,
+    /// 19: POV-Ray's f_flange_cover.
+    FlangeCover,
+    /// 32: POV-Ray's f_isect_ellipsoids.
+    IsectEllipsoids,
+    /// 62: POV-Ray's f_spikes.
+    Spikes,
+    /// 63: POV-Ray's f_spikes_2d.
+    Spikes2d,
     /// 25: POV-Ray's f_helix1.
     Helix1,
     /// 26: POV-Ray's f_helix2.
@@ -64,11 +79,15 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (3, Internal::Curve(Curve::AlgbrCyl4), 8),
     (4, Internal::Field(Field::Bicorn), 5),
     (5, Internal::Field(Field::Bifolia), 5),
+    (6, Internal::Blob, 8),
+    (7, Internal::Blob2, 7),
+    (10, Internal::CrossEllipsoids, 7),
     (11, Internal::Field(Field::CrossedTrough), 4),
     (12, Internal::Field(Field::CubicSaddle), 4),
     (13, Internal::Field(Field::Cushion), 4),
     (14, Internal::Field(Field::DevilsCurve), 4),
     (15, Internal::Curve(Curve::Devils), 9),
+    (19, Internal::FlangeCover, 7),
     (20, Internal::Field(Field::FoliumSurface), 6),
     (21, Internal::Curve(Curve::Folium), 9),
     (22, Internal::Field(Field::Glob), 4),
@@ -77,6 +96,7 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (26, Internal::Helix2, 10),
     (30, Internal::Field(Field::HuntSurface), 4),
     (31, Internal::Field(Field::HyperbolicTorus), 6),
+    (32, Internal::IsectEllipsoids, 7),
     (33, Internal::Field(Field::KampyleOfEudoxus), 6),
     (34, Internal::Curve(Curve::Kampyle), 9),
     (35, Internal::Field(Field::KleinBottle), 4),
@@ -98,6 +118,8 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (54, Internal::Field(Field::QuarticParaboloid), 4),
     (55, Internal::Field(Field::QuarticSaddle), 4),
     (56, Internal::Field(Field::QuarticCylinder), 6),
+    (62, Internal::Spikes, 8),
+    (63, Internal::Spikes2d, 7),
     (64, Internal::Spiral, 9),
     (65, Internal::Field(Field::SteinersRoman), 4),
     (66, Internal::Field(Field::Strophoid), 7),
@@ -136,6 +158,13 @@ impl Internal {
         match self {
             Internal::Field(f) => f.eval(p, &a[3..]),
             Internal::Curve(f) => f.eval(p, &a[3..]),
+            Internal::Blob => blobs::blob(p, &a[3..]),
+            Internal::Blob2 => blobs::blob2(p, &a[3..]),
+            Internal::CrossEllipsoids => blobs::crossed_ellipsoids(p, &a[3..], false),
+            Internal::FlangeCover => blobs::flange_cover(p, &a[3..]),
+            Internal::IsectEllipsoids => blobs::crossed_ellipsoids(p, &a[3..], true),
+            Internal::Spikes => blobs::spikes(p, &a[3..]),
+            Internal::Spikes2d => blobs::spikes_2d(p, &a[3..]),
             Internal::Helix1 => helix::helix1(p, &a[3..]),
             Internal::Helix2 => helix::helix2(p, &a[3..]),
             Internal::Poly4 => tubes::poly4(p, &a[3..]),
