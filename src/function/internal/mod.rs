@@ -7,6 +7,7 @@ mod algebraic;
 mod blobs;
 mod curves;
 mod helix;
+mod hexagons;
 mod tubes;
 
 use glam::DVec3;
@@ -40,6 +41,10 @@ pub enum Internal {
     Helix1,
     /// 26: POV-Ray's f_helix2.
     Helix2,
+    /// 27: POV-Ray's f_hex_x.
+    HexX,
+    /// 28: POV-Ray's f_hex_y.
+    HexY,
     /// 51: POV-Ray's f_poly4.
     Poly4,
     /// 52: POV-Ray's f_polytubes.
@@ -94,6 +99,8 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (23, Internal::Field(Field::Heart), 4),
     (25, Internal::Helix1, 10),
     (26, Internal::Helix2, 10),
+    (27, Internal::HexX, 4),
+    (28, Internal::HexY, 4),
     (30, Internal::Field(Field::HuntSurface), 4),
     (31, Internal::Field(Field::HyperbolicTorus), 6),
     (32, Internal::IsectEllipsoids, 7),
@@ -167,6 +174,8 @@ impl Internal {
             Internal::Spikes2d => blobs::spikes_2d(p, &a[3..]),
             Internal::Helix1 => helix::helix1(p, &a[3..]),
             Internal::Helix2 => helix::helix2(p, &a[3..]),
+            Internal::HexX => hexagons::hex_x(p),
+            Internal::HexY => hexagons::hex_y(p),
             Internal::Poly4 => tubes::poly4(p, &a[3..]),
             Internal::Polytubes => tubes::polytubes(p, &a[3..]),
             Internal::Spiral => helix::spiral(p, &a[3..]),
