@@ -16,6 +16,9 @@ pub enum Field {
     Bicorn,
     /// 5: a y ρ² - r⁴ (the bifolium turned about y); a = P1.
     Bifolia,
+    /// 8: Boy's surface in its classic sextic form, times P1 (functions.inc calls P1 a scale,
+    /// but POV-Ray multiplies by it).
+    BoySurface,
     /// 11: x²z² - y.
     CrossedTrough,
     /// 12: z + y³ - x³.
@@ -24,6 +27,10 @@ pub enum Field {
     Cushion,
     /// 14: y⁴ - y²/4 - (x² + z²)² + 0.36 x².
     DevilsCurve,
+    /// 16: a torus about y (radii a = P1, b = P2, centre (P3, P4, 0)) inverted in the sphere of
+    /// radius k = P5 at the origin, its quartic negated. POV-Ray's has one term more than the
+    /// inversion gives, 8 (a² - b²) k² P4 y r² (measured; it only matters for P4 ≠ 0).
+    DupinCyclid,
     /// 20: y² + z² + (b + 1) x² - (4a - b) x (y² + z²); a = P1 (neck), b = P2 (divergence).
     FoliumSurface,
     /// 22: x⁴ (1 + x) / 2 - y² - z².
@@ -95,6 +102,8 @@ impl Field {
                 let t = rho2 + 2.0 * s * y - s * s;
                 y2 * (s * s - rho2) - t * t
             }
+            Field::BoySurface => a[0] * boy(x, y, z),
+            Field::DupinCyclid => dupin(p, a),
             Field::Bifolia => a[0] * y * rho2 - r2 * r2,
             Field::CrossedTrough => x2 * z2 - y,
             Field::CubicSaddle => z + y2 * y - x2 * x,
@@ -186,4 +195,38 @@ fn cushion(x2: f64, y2: f64, z: f64, z2: f64) -> f64 {
     x2 + y2 - 2.0 * z2 + 2.0 * z2 * z + 2.0 * y2 * z - z2 * z2 - y2 * z2 - y2 * y2 + x2 * z2
         - 2.0 * x2 * y2
         - x2 * x2
+}
+
+/// Boy's surface, 64 (1 - z)³z³ - 48 (1 - z)²z² (3x² + 3y² + 2z²) + 12 (1 - z) z (27 ρ⁴ -
+/// 24 z²ρ² + 36√2 yz (y² - 3x²) + 4z⁴) + (9ρ² - 2z²)(-81 ρ⁴ - 72 z²ρ² + 108√2 xz (x² - 3y²)
+/// + 4z⁴), ρ² = x² + y².
+fn boy(x: f64, y: f64, z: f64) -> f64 {
+    let (x2, y2, z2) = (x * x, y * y, z * z);
+    let rho2 = x2 + y2;
+    let w = 1.0 - z;
+    let sqrt2 = std::f64::consts::SQRT_2;
+    let zw = z * w;
+    64.0 * zw * zw * zw - 48.0 * zw * zw * (3.0 * rho2 + 2.0 * z2)
+        + 12.0
+            * zw
+            * (27.0 * rho2 * rho2 - 24.0 * z2 * rho2
+                + 36.0 * sqrt2 * y * z * (y2 - 3.0 * x2)
+                + 4.0 * z2 * z2)
+        + (9.0 * rho2 - 2.0 * z2)
+            * (-81.0 * rho2 * rho2 - 72.0 * z2 * rho2
+                + 108.0 * sqrt2 * x * z * (x2 - 3.0 * y2)
+                + 4.0 * z2 * z2)
+}
+
+/// The Dupin cyclide's quartic: the torus (|q - c|² + a² - b²)² - 4a²((qx - cx)² + qz²) at
+/// q = k²p / |p|², times |p|⁴, with POV-Ray's extra term.
+fn dupin(p: DVec3, a: &[f64]) -> f64 {
+    let (major, minor, cx, cy, k) = (a[0], a[1], a[2], a[3], a[4]);
+    let r2 = p.length_squared();
+    let k2 = k * k;
+    let shape = major * major - minor * minor;
+    let t = k2 * k2 - 2.0 * k2 * (p.x * cx + p.y * cy) + (cx * cx + cy * cy + shape) * r2;
+    let across = k2 * p.x - cx * r2;
+    let v = t * t - 4.0 * major * major * (across * across + k2 * k2 * p.z * p.z);
+    -(v + 8.0 * shape * k2 * cy * p.y * r2)
 }
