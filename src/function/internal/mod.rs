@@ -6,6 +6,7 @@
 mod algebraic;
 mod blobs;
 mod curves;
+pub(super) mod fractal;
 mod helix;
 mod hexagons;
 mod tubes;
@@ -45,6 +46,12 @@ pub enum Internal {
     HexX,
     /// 28: POV-Ray's f_hex_y.
     HexY,
+    /// 29: POV-Ray's f_hetero_mf (matches in distribution only).
+    HeteroMf,
+    /// 58: POV-Ray's f_ridge (matches in distribution only).
+    Ridge,
+    /// 59: POV-Ray's f_ridged_mf (matches in distribution only).
+    RidgedMf,
     /// 51: POV-Ray's f_poly4.
     Poly4,
     /// 52: POV-Ray's f_polytubes.
@@ -103,6 +110,7 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (26, Internal::Helix2, 10),
     (27, Internal::HexX, 4),
     (28, Internal::HexY, 4),
+    (29, Internal::HeteroMf, 9),
     (30, Internal::Field(Field::HuntSurface), 4),
     (31, Internal::Field(Field::HyperbolicTorus), 6),
     (32, Internal::IsectEllipsoids, 7),
@@ -127,6 +135,8 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (54, Internal::Field(Field::QuarticParaboloid), 4),
     (55, Internal::Field(Field::QuarticSaddle), 4),
     (56, Internal::Field(Field::QuarticCylinder), 6),
+    (58, Internal::Ridge, 9),
+    (59, Internal::RidgedMf, 9),
     (62, Internal::Spikes, 8),
     (63, Internal::Spikes2d, 7),
     (64, Internal::Spiral, 9),
@@ -178,6 +188,9 @@ impl Internal {
             Internal::Helix2 => helix::helix2(p, &a[3..]),
             Internal::HexX => hexagons::hex_x(p),
             Internal::HexY => hexagons::hex_y(p),
+            Internal::HeteroMf => fractal::hetero_mf(p, &a[3..]),
+            Internal::Ridge => fractal::ridge(p, &a[3..]),
+            Internal::RidgedMf => fractal::ridged_mf(p, &a[3..]),
             Internal::Poly4 => tubes::poly4(p, &a[3..]),
             Internal::Polytubes => tubes::polytubes(p, &a[3..]),
             Internal::Spiral => helix::spiral(p, &a[3..]),
