@@ -52,6 +52,8 @@ pub enum Internal {
     Ridge,
     /// 59: POV-Ray's f_ridged_mf (matches in distribution only).
     RidgedMf,
+    /// 40: POV-Ray's f_mesh1.
+    Mesh1,
     /// 51: POV-Ray's f_poly4.
     Poly4,
     /// 52: POV-Ray's f_polytubes.
@@ -121,6 +123,7 @@ const TABLE: &[(u32, Internal, usize)] = &[
     (37, Internal::Field(Field::KummerV2), 7),
     (38, Internal::Field(Field::LemniscateOfGerono), 4),
     (39, Internal::Curve(Curve::Lemniscate), 9),
+    (40, Internal::Mesh1, 8),
     (41, Internal::Field(Field::Mitre), 4),
     (42, Internal::Field(Field::NodalCubic), 4),
     (43, Internal::Field(Field::Cushion), 4),
@@ -191,6 +194,7 @@ impl Internal {
             Internal::HeteroMf => fractal::hetero_mf(p, &a[3..]),
             Internal::Ridge => fractal::ridge(p, &a[3..]),
             Internal::RidgedMf => fractal::ridged_mf(p, &a[3..]),
+            Internal::Mesh1 => tubes::mesh1(p, &a[3..]),
             Internal::Poly4 => tubes::poly4(p, &a[3..]),
             Internal::Polytubes => tubes::polytubes(p, &a[3..]),
             Internal::Spiral => helix::spiral(p, &a[3..]),

@@ -33,3 +33,29 @@ pub fn polytubes(p: DVec3, a: &[f64]) -> f64 {
     }
     best
 }
+
+/// 40: a woven mesh of threads along x, P1 apart in z, and along z, P0 apart in x. Thread k
+/// of each family rises and falls as ±P3 cos(π t / spacing) along its length t, the sign
+/// alternating with k and opposite between the two families, so that they pass over and
+/// under each other. The value is the distance to the nearest thread, horizontal offsets
+/// times P2 and vertical ones times P4. Of each family only the two threads either side
+/// of the point can be nearest: the next ones rise like those, only farther away.
+/// (POV-Ray's values for negative spacings differ; they are not reproduced.)
+pub fn mesh1(p: DVec3, a: &[f64]) -> f64 {
+    let (dx, dz, across, amplitude, vertical) = (a[0], a[1], a[2], a[3], a[4]);
+    let family = |along: f64, across_at: f64, spacing: f64, other: f64, sign: f64| {
+        let k = (across_at / spacing).floor();
+        let wave = amplitude * (std::f64::consts::PI * along / other).cos();
+        [k, k + 1.0]
+            .map(|k| {
+                let parity = if k.rem_euclid(2.0) == 0.0 { 1.0 } else { -1.0 };
+                let rise = p.y - sign * parity * wave;
+                ((across_at - k * spacing) * across).hypot(rise * vertical)
+            })
+            .into_iter()
+            .fold(f64::INFINITY, f64::min)
+    };
+    let along_x = family(p.x, p.z, dz, dx, 1.0);
+    let along_z = family(p.z, p.x, dx, dz, -1.0);
+    along_x.min(along_z)
+}
