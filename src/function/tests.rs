@@ -1776,6 +1776,40 @@ fn fractals_match_povray_in_distribution() {
     }
 }
 
+/// Every internal function, at every argument set built from awkward values (zeros, signs,
+/// huge, tiny, infinite, NaN), returns without panicking and without looping for long.
+#[test]
+fn internal_functions_never_panic() {
+    const AWKWARD: [f64; 11] = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        2.5,
+        1e300,
+        -1e300,
+        1e-300,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ];
+    let mut count = 0;
+    for n in 0..100 {
+        let Some(f) = Internal::numbered(n) else {
+            continue;
+        };
+        count += 1;
+        let mut args = vec![0.0; f.arity()];
+        for shift in 0..AWKWARD.len() * AWKWARD.len() {
+            for (i, a) in args.iter_mut().enumerate() {
+                *a = AWKWARD[(shift / AWKWARD.len() * (i + 1) + shift + i) % AWKWARD.len()];
+            }
+            let _ = f.eval(&args);
+        }
+    }
+    assert_eq!(count, 74, "74 of the 78 numbers are supported");
+}
+
 #[test]
 fn operators_follow_povray() {
     // select(x, 6, 5): 5 for x = 1, 6 for x = -1.
