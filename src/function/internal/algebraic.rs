@@ -39,13 +39,15 @@ pub enum Field {
     Heart,
     /// 30: Hunt's surface, -(4 (r² - 13)³ + 27 (3x² + y² - 4z² - 12)²).
     HuntSurface,
-    /// 31: major radius a = P1, minor b = P2.
+    /// 31: -(x² + y² - z²)² + 2(a² + b²)(x² - z²) - 2(a² - b²)y² - (a² - b²)²; a = P1 (major
+    /// radius), b = P2 (minor).
     HyperbolicTorus,
     /// 33: b²x⁴ - a²b²x² - y² - z²; a = P1 (dimple), b = P2 (closeness).
     KampyleOfEudoxus,
-    /// 35: the figure of a Klein bottle's classic sextic, negated.
+    /// 35: the classic sextic of the Klein bottle, -((r² + 2y - 1)((r² - 2y - 1)² - 8z²) +
+    /// 16xz (r² - 2y - 1)).
     KleinBottle,
-    /// 36.
+    /// 36: Kummer's quartic, r² - 1 + x²y² + x²z² + y²z² - (x⁴ + y⁴ + z⁴).
     KummerV1,
     /// 37: 1 - a r² - c xyz - (x⁴ + y⁴ + z⁴) - b (x²y² + x²z² + y²z²); a, b, c = P1..P3.
     KummerV2,
@@ -59,7 +61,8 @@ pub enum Field {
     OvalsOfCassini,
     /// 45: y - x² - z².
     Paraboloid,
-    /// 46: major radius a = P1, minor b = P2.
+    /// 46: -(x² + y² - z)² + (a² + b²)(x² - z) - (a² - b²)y² - (a² - b²)²; a = P1 (major
+    /// radius), b = P2 (minor).
     ParabolicTorus,
     /// 48: x⁴ + y⁴ + z⁴ - r².
     Pillow,
