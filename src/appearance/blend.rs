@@ -16,7 +16,10 @@ pub enum Blend {
 /// the last; between two entries the colours mix linearly (all five channels); equal
 /// values make a sharp step. A value exactly at an entry belongs to the interval below it
 /// (measured: `[0 green][0.5 green][0.5 red][1 red]` is green at exactly 0.5), which
-/// decides the faces of boxes and planes that lie on a stripe's edge.
+/// decides the faces of boxes and planes that lie on a stripe's edge; but a value at or
+/// above the last entry takes the last, even when entries before it share its value
+/// (measured: `[0 black][.5 red][1 yellow][1 black]` is black at a fractal's interior value
+/// of exactly 1, as textures/patterns/fractals3.pov paints its sets).
 pub fn blend_position<T>(map: &[T], v: f64, key: impl Fn(&T) -> f64) -> Blend {
     let n = map.len();
     if n == 0 {
@@ -24,6 +27,9 @@ pub fn blend_position<T>(map: &[T], v: f64, key: impl Fn(&T) -> f64) -> Blend {
     }
     if v <= key(&map[0]) {
         return Blend::One(0);
+    }
+    if v >= key(&map[n - 1]) {
+        return Blend::One(n - 1);
     }
     for i in 1..n {
         let hi = key(&map[i]);
@@ -63,6 +69,9 @@ mod tests {
         // it, the next pair.
         assert!(matches!(at(0.5), Blend::Two(0, t) if t == 1.0));
         assert!(matches!(at(0.5 + 1e-12), Blend::Two(2, t) if t < 1e-9));
+        // At the last value the last entry, even with an equal entry before it.
+        let end = [0.0, 0.5, 1.0, 1.0];
+        assert!(matches!(blend_position(&end, 1.0, |e| *e), Blend::One(3)));
         let empty: [f64; 0] = [];
         assert!(matches!(blend_position(&empty, 0.5, |e| *e), Blend::None));
     }

@@ -5,6 +5,7 @@
 pub mod blend;
 pub mod crackle;
 pub mod finish;
+pub mod fractal;
 pub mod noise;
 pub mod normal;
 pub mod pattern;

@@ -10,7 +10,7 @@ use std::f64::consts::TAU;
 
 use super::blend::{Blend, blend_position};
 use super::noise::{noise, value_gradient_vector};
-use super::pattern::{WAVE_SOURCES, pattern_value, warp_point};
+use super::pattern::{QUILT_SCALE, WAVE_SOURCES, pattern_value, quilt_vector, warp_point};
 use crate::scene::{Normal, Pattern, PatternKind, SlopeEntry};
 
 /// The corners of a regular tetrahedron in pattern space, oriented as POV-Ray's are: one
@@ -172,6 +172,9 @@ fn own_normal(pattern: &Pattern, q: DVec3) -> Option<DVec3> {
             }
             sum
         }
+        // The bulge vector itself (measured on a plane over one cube with three lights:
+        // residual 1e-5, the 16-bit precision, against 0.006 for the finite difference).
+        PatternKind::Quilted(qu) => QUILT_SCALE * quilt_vector(&qu, warp_point(pattern, q)),
         _ => return None,
     })
 }

@@ -27,8 +27,9 @@ pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
 };
 pub use texture::{
-    Crackle, Finish, ImageData, ImageMap, Interior, MapType, Normal, Pattern, PatternKind, Pigment,
-    PigmentKind, Reflection, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
+    Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap, Interior,
+    MapType, Normal, Pattern, PatternKind, Pigment, PigmentKind, Quilted, Reflection, SlopeEntry,
+    Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
 };
 
 use glam::DVec3;

@@ -147,6 +147,13 @@ pub enum PatternKind {
     Function(std::sync::Arc<crate::function::Program>),
     /// `pigment_pattern { ... }`: the grey value (0.297 r + 0.589 g + 0.114 b) of a pigment.
     PigmentPattern(Box<Pigment>),
+    /// `quilted`: a rounded bulge in each unit cube (src/appearance/pattern.rs).
+    Quilted(Quilted),
+    /// `mandel`, `julia`, `magnet`: escape-time fractals in the x-y plane
+    /// (src/appearance/fractal.rs).
+    Fractal(Fractal),
+    /// `cells`: one random value in [0, 1) per unit cube.
+    Cells,
 }
 
 impl PatternKind {
@@ -198,6 +205,89 @@ impl Default for Crackle {
             metric: 2.0,
             offset: 0.0,
             solid: false,
+        }
+    }
+}
+
+/// `quilted`'s settings: the two inner control points of the cubic Bezier curve that
+/// shapes each cube's bulge (POV-Ray's defaults: both 1, measured).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quilted {
+    pub control0: f64,
+    pub control1: f64,
+}
+
+impl Default for Quilted {
+    fn default() -> Self {
+        Quilted {
+            control0: 1.0,
+            control1: 1.0,
+        }
+    }
+}
+
+/// The iteration a fractal pattern runs: `z^exponent + c` (mandel and julia, exponent 2 to
+/// 33) or one of the two magnet maps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FractalFormula {
+    Power(u32),
+    Magnet1,
+    Magnet2,
+}
+
+/// What a fractal pattern's value is made of, by POV-Ray's `interior` / `exterior` type
+/// number (0 to 6); `Count` is 1: the escape iteration over `max_iteration` outside, the
+/// smallest |z| of the orbit inside.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FractalColouring {
+    One,
+    Count,
+    Real,
+    Imaginary,
+    RealSquared,
+    ImaginarySquared,
+    Absolute,
+}
+
+impl FractalColouring {
+    /// The colouring of POV-Ray's type number, None outside 0 to 6.
+    pub fn from_type(n: i64) -> Option<FractalColouring> {
+        use FractalColouring::*;
+        [
+            One,
+            Count,
+            Real,
+            Imaginary,
+            RealSquared,
+            ImaginarySquared,
+            Absolute,
+        ]
+        .get(usize::try_from(n).ok()?)
+        .copied()
+    }
+}
+
+/// `mandel`, `julia` and `magnet`'s settings (src/appearance/fractal.rs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fractal {
+    pub formula: FractalFormula,
+    /// The julia parameter c; None for the Mandelbrot forms, where c is the point.
+    pub julia: Option<[f64; 2]>,
+    pub max_iteration: u32,
+    /// (colouring, factor) of the points that escape; POV-Ray's default is type 1.
+    pub exterior: (FractalColouring, f64),
+    /// (colouring, factor) of the points that do not; POV-Ray's default is type 0.
+    pub interior: (FractalColouring, f64),
+}
+
+impl Fractal {
+    pub fn new(formula: FractalFormula, julia: Option<[f64; 2]>, max_iteration: u32) -> Self {
+        Fractal {
+            formula,
+            julia,
+            max_iteration,
+            exterior: (FractalColouring::Count, 1.0),
+            interior: (FractalColouring::One, 1.0),
         }
     }
 }
