@@ -535,17 +535,22 @@ fn merge(args: MergeArgs) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `A..B`: a half-open range of sample indices.
-fn parse_range(s: &str) -> Result<std::ops::Range<u32>, String> {
+/// `A..B` of two numbers (`what` names one in the error).
+fn parse_pair<T: std::str::FromStr>(s: &str, what: &str) -> Result<(T, T), String> {
     let (a, b) = s
         .split_once("..")
         .ok_or_else(|| format!("expected A..B, got `{s}`"))?;
     let n = |x: &str| {
         x.trim()
-            .parse::<u32>()
-            .map_err(|_| format!("`{x}` is not a sample index"))
+            .parse::<T>()
+            .map_err(|_| format!("`{x}` is not {what}"))
     };
-    let (a, b) = (n(a)?, n(b)?);
+    Ok((n(a)?, n(b)?))
+}
+
+/// `A..B`: a half-open range of sample indices.
+fn parse_range(s: &str) -> Result<std::ops::Range<u32>, String> {
+    let (a, b) = parse_pair::<u32>(s, "a sample index")?;
     if a >= b {
         return Err(format!("the range {a}..{b} is empty"));
     }
@@ -689,16 +694,10 @@ impl RenderArgs {
             ..PovSettings::default()
         };
         if let Some(frames) = &self.frames {
-            let (a, b) = frames
-                .split_once("..")
-                .ok_or_else(|| format!("--frames: expected A..B, got `{frames}`"))?;
-            let frame = |x: &str| {
-                x.trim()
-                    .parse::<i64>()
-                    .map_err(|_| format!("--frames: `{x}` is not a frame number"))
-            };
-            settings.animation.initial_frame = frame(a)?;
-            settings.animation.final_frame = frame(b)?;
+            let (a, b) = parse_pair::<i64>(frames, "a frame number")
+                .map_err(|e| format!("--frames: {e}"))?;
+            settings.animation.initial_frame = a;
+            settings.animation.final_frame = b;
             if let Some(n) = self.frame {
                 let (a, b) = (
                     settings.animation.initial_frame,

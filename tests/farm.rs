@@ -109,27 +109,39 @@ fn shards_that_do_not_belong_together_are_refused_with_the_reason() {
     let mut twice = parts.clone();
     twice.push(parts[1].clone());
     refused(&twice, "overlaps");
-    // Another seed, another size, another scene.
+    // Shard 1 of another seed, and of another scene.
+    let middle = |name: &str, seed: &str, out: &Path| {
+        ok(penumbra()
+            .args([
+                "render",
+                &scene(name),
+                "-q",
+                "--width",
+                "96",
+                "--height",
+                "72",
+            ])
+            .args([
+                "--spp",
+                "16",
+                "--seed",
+                seed,
+                "--sample-range",
+                "5..10",
+                "-o",
+            ])
+            .arg(out)
+            .output()
+            .expect("runs"))
+    };
     let seed = dir.join("seed.pshard");
-    ok(penumbra()
-        .args(["render", &scene("soft_shadow.pov"), "-q", "--width", "96"])
-        .args(["--height", "72", "--spp", "16", "--seed", "8"])
-        .args(["--sample-range", "5..10", "-o"])
-        .arg(&seed)
-        .output()
-        .expect("runs"));
+    middle("soft_shadow.pov", "8", &seed);
     refused(
         &[parts[0].clone(), seed, parts[2].clone()],
         "seed 7 against 8",
     );
     let other = dir.join("other.pshard");
-    ok(penumbra()
-        .args(["render", &scene("reflection.pov"), "-q", "--width", "96"])
-        .args(["--height", "72", "--spp", "16", "--seed", "7"])
-        .args(["--sample-range", "5..10", "-o"])
-        .arg(&other)
-        .output()
-        .expect("runs"));
+    middle("reflection.pov", "7", &other);
     refused(
         &[parts[0].clone(), other, parts[2].clone()],
         "different scenes",

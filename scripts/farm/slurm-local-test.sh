@@ -243,17 +243,21 @@ SOCK=$TMP/munge/munge.socket
 munged --foreground --force --socket="$SOCK" --key-file="$KEY" --pid-file="$TMP/munge/munged.pid" \
   --log-file="$TMP/log/munged.log" --seed-file="$TMP/munge/munged.seed" >"$TMP/log/munged.out" 2>&1 &
 PIDS_TO_STOP+=("$!:munged")
-ok=0
-deadline=$((SECONDS + 20))
-while ((SECONDS < deadline)); do
-  if timeout 5 munge -n -S "$SOCK" 2>/dev/null | timeout 5 unmunge -S "$SOCK" >/dev/null 2>&1; then
-    ok=1
-    break
-  fi
-  kill -0 "${PIDS_TO_STOP[0]%%:*}" 2>/dev/null || break
-  sleep 0.2
-done
-if [ "$ok" != 1 ]; then
+MUNGED_PID=$!
+# wait_for SECONDS PID COMMAND...: until COMMAND succeeds (0), the daemon PID dies or the
+# time is up (1).
+wait_for() {
+  local deadline=$((SECONDS + $1)) pid=$2
+  shift 2
+  while ((SECONDS < deadline)); do
+    "$@" && return 0
+    kill -0 "$pid" 2>/dev/null || return 1
+    sleep 0.2
+  done
+  return 1
+}
+munge_round_trip() { timeout 5 munge -n -S "$SOCK" 2>/dev/null | timeout 5 unmunge -S "$SOCK" >/dev/null 2>&1; }
+if ! wait_for 20 "$MUNGED_PID" munge_round_trip; then
   cat "$TMP/log/munged.out" "$TMP/log/munged.log" 2>/dev/null | tail -5 >&2
   skip "munged did not start (a credential round trip failed)"
 fi
@@ -333,17 +337,8 @@ slurmctld -D -i -f "$SLURM_CONF" >"$TMP/log/slurmctld.out" 2>&1 &
 PIDS_TO_STOP+=("$!:slurmctld")
 CTLD_PID=$!
 SLURM_UP=1
-ok=0
-deadline=$((SECONDS + 40))
-while ((SECONDS < deadline)); do
-  if timeout 5 scontrol ping 2>/dev/null | grep -q 'is UP'; then
-    ok=1
-    break
-  fi
-  kill -0 "$CTLD_PID" 2>/dev/null || break
-  sleep 0.3
-done
-if [ "$ok" != 1 ]; then
+controller_up() { timeout 5 scontrol ping 2>/dev/null | grep -q 'is UP'; }
+if ! wait_for 40 "$CTLD_PID" controller_up; then
   tail -n 8 "$TMP/log/slurmctld.out" "$TMP/log/slurmctld.log" >&2 2>/dev/null
   skip "slurmctld did not come up (logs above)"
 fi
@@ -352,21 +347,14 @@ say "slurmctld is up (port $PORT)"
 slurmd -D -N "$NODE" -f "$SLURM_CONF" >"$TMP/log/slurmd.out" 2>&1 &
 PIDS_TO_STOP+=("$!:slurmd")
 SLURMD_PID=$!
-ok=0
 state=""
-deadline=$((SECONDS + 40))
-while ((SECONDS < deadline)); do
+# idle, not idle* (not responding); a drained node fails here with its reason shown below.
+node_ready() {
   state=$(timeout 5 sinfo -h -n "$NODE" -o %T 2>/dev/null | head -n1)
-  # idle, not idle* (not responding); a drained node fails here with its reason shown below.
-  case "$state" in idle | mixed | allocated)
-    ok=1
-    break
-    ;;
-  esac
-  kill -0 "$SLURMD_PID" 2>/dev/null || break
-  sleep 0.3
-done
-if [ "$ok" != 1 ]; then
+  case "$state" in idle | mixed | allocated) return 0 ;; esac
+  return 1
+}
+if ! wait_for 40 "$SLURMD_PID" node_ready; then
   tail -n 8 "$TMP/log/slurmd.out" "$TMP/log/slurmd.log" >&2 2>/dev/null
   timeout 5 scontrol show node "$NODE" 2>/dev/null | grep -E 'State|Reason' >&2
   skip "slurmd did not register (node state '${state:-none}'; logs above)"

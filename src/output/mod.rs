@@ -9,6 +9,7 @@
 mod atomic;
 mod error;
 mod exr_file;
+mod fnv;
 mod image;
 mod png_file;
 mod shard;
@@ -16,9 +17,10 @@ pub mod srgb;
 
 pub use self::error::OutputError;
 pub use self::exr_file::{ExrFile, read_exr, write_exr};
+pub use self::fnv::Fnv;
 pub use self::image::Image;
 pub use self::png_file::{read_png, write_png};
-pub use self::shard::{Fnv, Shard, ShardHeader, merge_shards, read_shard, write_shard};
+pub use self::shard::{Shard, ShardHeader, merge_shards, read_shard, write_shard};
 
 use std::path::Path;
 

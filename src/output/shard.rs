@@ -14,6 +14,7 @@ use std::path::Path;
 
 use super::OutputError;
 use super::atomic::write_atomically;
+use super::fnv::Fnv;
 use crate::render::{Film, PixelSum};
 
 const MAGIC: &str = "penumbra-shard 1";
@@ -66,34 +67,6 @@ fn io(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
     move |source| OutputError::Io {
         path: path.to_path_buf(),
         source,
-    }
-}
-
-/// FNV-1a, 64 bits: stable across versions and platforms, unlike the standard hasher.
-#[derive(Clone, Copy)]
-pub struct Fnv(u64);
-
-impl Default for Fnv {
-    fn default() -> Self {
-        Fnv(0xcbf2_9ce4_8422_2325)
-    }
-}
-
-impl Fnv {
-    pub fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
-        }
-    }
-
-    /// Bytes and then a separator, so that ("ab", "c") and ("a", "bc") differ.
-    pub fn write_field(&mut self, bytes: &[u8]) {
-        self.write(bytes);
-        self.write(&[0xff]);
-    }
-
-    pub fn finish(&self) -> u64 {
-        self.0
     }
 }
 

@@ -43,6 +43,9 @@ pub struct PathSpline {
     entries: Vec<(f64, PathValue)>,
     /// Components of the widest entry (the value has as many).
     pub width: u8,
+    /// The natural spline's second derivatives at the entries, per component: solved
+    /// once by [`PathSpline::finish`], since functions read splines per shading point.
+    second: Vec<PathValue>,
 }
 
 impl PathSpline {
@@ -55,6 +58,15 @@ impl PathSpline {
         }
         self.entries.insert(at, (t, v));
         self.width = self.width.max(width);
+        self.second.clear();
+    }
+
+    /// Readies the spline for reading once its entries are in.
+    pub fn finish(&mut self) {
+        let columns: Vec<Vec<f64>> = (0..5).map(|c| self.second_derivatives(c)).collect();
+        self.second = (0..self.entries.len())
+            .map(|i| std::array::from_fn(|c| columns[c][i]))
+            .collect();
     }
 
     pub fn len(&self) -> usize {
@@ -155,20 +167,21 @@ impl PathSpline {
             Ok(i) => i,
             Err(v) => return v,
         };
+        debug_assert_eq!(self.second.len(), n, "read before `finish`");
         let ((t0, a), (t1, b)) = (self.entries[i], self.entries[i + 1]);
+        let (m0, m1) = match (self.second.get(i), self.second.get(i + 1)) {
+            (Some(m0), Some(m1)) => (*m0, *m1),
+            _ => ([0.0; 5], [0.0; 5]),
+        };
         let h = t1 - t0;
         let (u, w) = ((t1 - t) / h, (t - t0) / h);
         std::array::from_fn(|c| {
-            let m = self.second_derivatives(c);
-            u * a[c]
-                + w * b[c]
-                + ((u * u * u - u) * m[i] + (w * w * w - w) * m[i + 1]) * h * h / 6.0
+            u * a[c] + w * b[c] + ((u * u * u - u) * m0[c] + (w * w * w - w) * m1[c]) * h * h / 6.0
         })
     }
 
     /// Component c's second derivatives at the entries of the natural spline (0 at both
-    /// ends): the tridiagonal system solved by elimination. Splines are short and read
-    /// while the scene is parsed, so this is not cached.
+    /// ends): the tridiagonal system solved by elimination.
     fn second_derivatives(&self, c: usize) -> Vec<f64> {
         let e = &self.entries;
         let n = e.len();
@@ -211,6 +224,7 @@ mod tests {
         for (t, v) in entries {
             s.insert(*t, [v[0], v[1], v[2], 0.0, 0.0], 3);
         }
+        s.finish();
         s
     }
 

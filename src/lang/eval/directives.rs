@@ -487,7 +487,7 @@ impl Evaluator<'_> {
         // closes the macro's scope, and a parameter passed by reference must be written
         // while that scope still exists (e.g. `#declare Stuff = object { Stuff ... } #end`).
         if local {
-            self.assign_local(name, value, scope);
+            self.assign_at(name, value, scope);
         } else {
             self.assign(name, value, false);
         }

@@ -45,6 +45,7 @@ impl Evaluator<'_> {
             ));
         }
         self.block_end(open, "the spline")?;
+        spline.finish();
         Ok(spline)
     }
 

@@ -400,15 +400,12 @@ impl Evaluator<'_> {
                 .find(|&i| self.scopes[i].contains_key(&name))
                 .unwrap_or(0)
         };
-        if value.needs_check_in_stream() {
-            self.special_names = true;
-        }
-        self.scopes[index].insert(name, value);
+        self.assign_at(name, value, index);
     }
 
-    /// `#local`: into scope `index` (the one the directive was written in), or the
+    /// Into scope `index` (for `#local`, the one the directive was written in), or the
     /// innermost if that has closed meanwhile.
-    pub(super) fn assign_local(&mut self, name: Rc<str>, value: Value, index: usize) {
+    pub(super) fn assign_at(&mut self, name: Rc<str>, value: Value, index: usize) {
         if value.needs_check_in_stream() {
             self.special_names = true;
         }
