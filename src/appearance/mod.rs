@@ -12,6 +12,7 @@ pub mod pattern;
 pub mod pigment;
 pub mod sky;
 pub mod texture;
+pub mod warps;
 
 pub use pigment::evaluate_pigment;
 pub use sky::sky_colour;

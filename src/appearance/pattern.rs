@@ -51,6 +51,10 @@ pub fn warp_chain(warps: &[Warp], turbulence: Option<&Turbulence>, mut p: DVec3)
         p = match w {
             Warp::Transform(t) => t.inverse_point(p),
             Warp::Turbulence(t) => p + dturbulence(p, t) * t.amount,
+            Warp::Repeat(r) => super::warps::repeat(r, p),
+            Warp::BlackHole(b) => super::warps::black_hole(b, p),
+            Warp::Mapping(m) => super::warps::mapping(m, p),
+            Warp::Planar { orient, distance } => super::warps::planar(orient, *distance, p),
         };
     }
     if let Some(t) = turbulence {

@@ -27,9 +27,10 @@ pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
 };
 pub use texture::{
-    Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap, Interior,
-    MapType, Normal, Pattern, PatternKind, Pigment, PigmentKind, Quilted, Reflection, SlopeEntry,
-    Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
+    BlackHole, Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap,
+    Interior, MapType, MappingKind, MappingWarp, Normal, Orientation, Pattern, PatternKind,
+    Pigment, PigmentKind, Quilted, Reflection, RepeatWarp, SlopeEntry, Texture, TextureMap,
+    Turbulence, VoxelGrid, Warp, Wave,
 };
 
 use glam::DVec3;

@@ -94,6 +94,73 @@ impl Default for Turbulence {
 pub enum Warp {
     Turbulence(Turbulence),
     Transform(Transform),
+    Repeat(RepeatWarp),
+    BlackHole(BlackHole),
+    /// `cylindrical`, `spherical`, `toroidal`, `cubic`: the point becomes (angle, height or
+    /// second angle, distance), then `orientation`'s matrix moves it.
+    Mapping(MappingWarp),
+    /// `planar <normal>, d`: (x, y, d) through the normal's orientation matrix.
+    Planar {
+        orient: Orientation,
+        distance: f64,
+    },
+}
+
+/// `warp { repeat <w along one axis> offset <v> flip <axes> }`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RepeatWarp {
+    pub axis: usize,
+    pub width: f64,
+    pub offset: DVec3,
+    /// 1 on each axis that odd repetitions mirror, 0 elsewhere.
+    pub flip: DVec3,
+}
+
+/// `warp { black_hole <c>, r falloff f strength s inverse repeat <v> turbulence <v> }`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlackHole {
+    pub centre: DVec3,
+    pub radius: f64,
+    pub falloff: f64,
+    pub strength: f64,
+    pub inverse: bool,
+    /// Cell size per axis, 0 where the hole does not repeat.
+    pub repeat: DVec3,
+    /// Each repeated hole's random displacement per axis.
+    pub jitter: DVec3,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MappingKind {
+    Cylindrical,
+    Spherical,
+    Toroidal { major_radius: f64 },
+    Cubic,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MappingWarp {
+    pub kind: MappingKind,
+    pub dist_exp: f64,
+    pub orient: Orientation,
+}
+
+/// The matrix a mapping warp's `orientation` (or planar's normal) applies to its result:
+/// columns (o.y + o.z, 0, -o.x), (0, o.x + o.z, o.y), (o.x, -o.y, o.z) for the unit vector o.
+/// Measured with povray's printed function values for x, y, -z, <1,1,0> and <0.3,-0.5,0.8>
+/// (and their negatives): not a rotation in general, but what POV-Ray computes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Orientation(pub glam::DMat3);
+
+impl Orientation {
+    pub fn new(o: DVec3) -> Orientation {
+        let o = o.normalize_or(DVec3::Z);
+        Orientation(glam::DMat3::from_cols(
+            DVec3::new(o.y + o.z, 0.0, -o.x),
+            DVec3::new(0.0, o.x + o.z, o.y),
+            DVec3::new(o.x, -o.y, o.z),
+        ))
+    }
 }
 
 /// A df3 file's voxels (x fastest, then y, then z), scaled to [0, 1] by their type's

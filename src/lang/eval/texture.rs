@@ -6,13 +6,14 @@ use glam::DVec3;
 
 use super::super::diagnostics::Diagnostic;
 use super::super::diagnostics::Span;
-use super::super::syntax::{Punct, TokenKind};
+use super::super::syntax::{Punct, Token, TokenKind};
 use super::Evaluator;
 use super::value::{Value, colour_of};
 use crate::scene::{
-    Colour, Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap,
-    Interior, MapType, Normal, Pattern, PatternKind, Pigment, PigmentKind, Reflection, SlopeEntry,
-    Texture, TextureMap, Transform, Turbulence, Warp, Wave,
+    BlackHole, Colour, Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData,
+    ImageMap, Interior, MapType, MappingKind, MappingWarp, Normal, Orientation, Pattern,
+    PatternKind, Pigment, PigmentKind, Reflection, RepeatWarp, SlopeEntry, Texture, TextureMap,
+    Transform, Turbulence, Warp, Wave,
 };
 
 type R<T> = Result<T, Diagnostic>;
@@ -628,38 +629,195 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// `warp { turbulence v octaves n omega w lambda l }`; other warps are unsupported.
+    /// `warp { ... }`: the turbulence warp or one of the geometric warps (appearance::warps).
     fn warp_block(&mut self) -> R<Option<Warp>> {
-        let start = (Turbulence::default(), false);
-        let (t, any) = self.block_items("warp", "the warp", start, |ev, tok, (t, any)| {
+        let open = self.expect(Punct::LBrace, "after `warp`")?;
+        self.enter(open.span)?;
+        let r = self.warp_body();
+        self.leave();
+        let w = r?;
+        self.expect(Punct::RBrace, "to close the warp")?;
+        Ok(w)
+    }
+
+    fn warp_body(&mut self) -> R<Option<Warp>> {
+        let tok = self.peek()?;
+        Ok(match tok.ident() {
+            Some("repeat") => {
+                self.next()?;
+                Some(self.repeat_warp(&tok)?)
+            }
+            Some("black_hole") => {
+                self.next()?;
+                Some(Warp::BlackHole(self.black_hole_warp()?))
+            }
+            Some("planar") => {
+                self.next()?;
+                let (mut normal, mut distance) = (DVec3::Z, 0.0);
+                if self.starts_float()? || self.peek()?.is_punct(Punct::Lt) {
+                    normal = self.vector3()?;
+                    self.expect(Punct::Comma, "after the planar warp's normal")?;
+                    distance = self.float()?;
+                }
+                Some(Warp::Planar {
+                    orient: Orientation::new(normal),
+                    distance,
+                })
+            }
+            Some(w @ ("cylindrical" | "spherical" | "toroidal" | "cubic")) => {
+                let kind = match w {
+                    "cylindrical" => MappingKind::Cylindrical,
+                    "spherical" => MappingKind::Spherical,
+                    "toroidal" => MappingKind::Toroidal { major_radius: 1.0 },
+                    _ => MappingKind::Cubic,
+                };
+                self.next()?;
+                Some(Warp::Mapping(self.mapping_warp(kind)?))
+            }
+            _ => self.turbulence_warp()?,
+        })
+    }
+
+    /// `repeat <w> [offset <v>] [flip <v>]`: w must lie along one axis, as POV-Ray demands.
+    fn repeat_warp(&mut self, tok: &Token) -> R<Warp> {
+        let dir = self.vector3()?;
+        let axes: Vec<usize> = (0..3).filter(|&i| dir[i] != 0.0).collect();
+        let [axis] = axes[..] else {
+            return Err(self.err(tok.span, "a repeat warp repeats along exactly one axis"));
+        };
+        let mut r = RepeatWarp {
+            axis,
+            width: dir[axis],
+            offset: DVec3::ZERO,
+            flip: DVec3::ZERO,
+        };
+        loop {
+            let t = self.peek()?;
+            match t.ident() {
+                Some("offset") => {
+                    self.next()?;
+                    r.offset = self.vector3()?;
+                }
+                Some("flip") => {
+                    self.next()?;
+                    let f = self.vector3()?;
+                    r.flip = DVec3::select(f.cmpne(DVec3::ZERO), DVec3::ONE, DVec3::ZERO);
+                }
+                _ => return Ok(Warp::Repeat(r)),
+            }
+        }
+    }
+
+    /// `black_hole <c>, r` and its modifiers (defaults: falloff 2, strength 1).
+    fn black_hole_warp(&mut self) -> R<BlackHole> {
+        let centre = self.vector3()?;
+        self.expect(Punct::Comma, "after the black hole's centre")?;
+        let tok = self.peek()?;
+        let radius = self.float()?;
+        if !(radius > 0.0) {
+            return Err(self.err(tok.span, "a black hole's radius must be positive"));
+        }
+        let mut b = BlackHole {
+            centre,
+            radius,
+            falloff: 2.0,
+            strength: 1.0,
+            inverse: false,
+            repeat: DVec3::ZERO,
+            jitter: DVec3::ZERO,
+        };
+        loop {
+            let t = self.peek()?;
+            match t.ident() {
+                Some("falloff") => {
+                    self.next()?;
+                    b.falloff = self.float()?;
+                }
+                Some("strength") => {
+                    self.next()?;
+                    b.strength = self.float()?;
+                }
+                Some("inverse") => {
+                    self.next()?;
+                    b.inverse = true;
+                }
+                Some("repeat") => {
+                    self.next()?;
+                    b.repeat = self.vector3()?.max(DVec3::ZERO);
+                }
+                Some("turbulence") => {
+                    self.next()?;
+                    b.jitter = self.vector3()?;
+                }
+                _ => return Ok(b),
+            }
+        }
+    }
+
+    /// `cylindrical`, `spherical`, `toroidal`: `orientation <v>`, `dist_exp f` and (toroidal)
+    /// `major_radius f`; `cubic` takes none, as in POV-Ray.
+    fn mapping_warp(&mut self, mut kind: MappingKind) -> R<MappingWarp> {
+        let mut m = MappingWarp {
+            kind,
+            dist_exp: 0.0,
+            orient: Orientation::new(DVec3::Z),
+        };
+        if kind == MappingKind::Cubic {
+            return Ok(m);
+        }
+        loop {
+            let t = self.peek()?;
+            match t.ident() {
+                Some("orientation") => {
+                    self.next()?;
+                    m.orient = Orientation::new(self.vector3()?);
+                }
+                Some("dist_exp") => {
+                    self.next()?;
+                    m.dist_exp = self.float()?;
+                }
+                Some("major_radius") if matches!(kind, MappingKind::Toroidal { .. }) => {
+                    self.next()?;
+                    kind = MappingKind::Toroidal {
+                        major_radius: self.float()?,
+                    };
+                    m.kind = kind;
+                }
+                _ => return Ok(m),
+            }
+        }
+    }
+
+    /// `turbulence v octaves n omega w lambda l` inside a warp.
+    fn turbulence_warp(&mut self) -> R<Option<Warp>> {
+        let (mut t, mut any) = (Turbulence::default(), false);
+        loop {
+            let tok = self.peek()?;
             match tok.ident() {
                 Some("turbulence") => {
-                    ev.next()?;
-                    let (v, s) = ev.expr()?;
-                    t.amount = ev.to_vec3(&v, s)?;
-                    *any = true;
+                    self.next()?;
+                    let (v, s) = self.expr()?;
+                    t.amount = self.to_vec3(&v, s)?;
+                    any = true;
                 }
                 Some("octaves") => {
-                    ev.next()?;
-                    t.octaves = ev.float()?.clamp(1.0, 10.0) as u32;
+                    self.next()?;
+                    t.octaves = self.float()?.clamp(1.0, 10.0) as u32;
                 }
                 Some("omega") => {
-                    ev.next()?;
-                    t.omega = ev.float()?;
+                    self.next()?;
+                    t.omega = self.float()?;
                 }
                 Some("lambda") => {
-                    ev.next()?;
-                    t.lambda = ev.float()?;
+                    self.next()?;
+                    t.lambda = self.float()?;
                 }
-                Some(w) => {
-                    let w = w.to_string();
-                    return Err(ev.unsupported(tok, &format!("warp {{ {w} }}")));
+                _ if tok.is_punct(Punct::RBrace) => {
+                    return Ok(any.then_some(Warp::Turbulence(t)));
                 }
-                None => return Err(ev.stray_in_block(tok, "the warp")),
+                _ => return Err(self.stray_in_block(&tok, "the warp")),
             }
-            Ok(())
-        })?;
-        Ok(any.then_some(Warp::Turbulence(t)))
+        }
     }
 
     /// `{ [v colour] ... }` after `color_map`; entries sorted by value as POV-Ray keeps them.
