@@ -28,7 +28,7 @@ pub use spline::{
 };
 pub use texture::{
     BlackHole, Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap,
-    Interior, MapType, MappingKind, MappingWarp, Normal, Orientation, Pattern, PatternKind,
+    Interior, Irid, MapType, MappingKind, MappingWarp, Normal, Orientation, Pattern, PatternKind,
     Pigment, PigmentKind, Quilted, Reflection, RepeatWarp, SlopeEntry, Texture, TextureMap,
     Turbulence, VoxelGrid, Warp, Wave,
 };
@@ -91,6 +91,8 @@ pub struct GlobalSettings {
     /// `noise_generator` in global_settings: the default for patterns that name none
     /// (applies to patterns read after it).
     pub noise_generator: u8,
+    /// `irid_wavelength`: the wavelengths (in POV-Ray's units) of r, g and b for `irid`.
+    pub irid_wavelength: DVec3,
 }
 
 impl Default for GlobalSettings {
@@ -101,6 +103,9 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: 2,
+            // Measured: povray's default interference at normal incidence has phase
+            // 4 pi d / lambda with lambda 0.70, 0.52, 0.48.
+            irid_wavelength: DVec3::new(0.70, 0.52, 0.48),
         }
     }
 }

@@ -614,6 +614,16 @@ pub struct Finish {
     /// the object's interior caustics of a 45th of it (measured: 1 + |cos|^c, where the
     /// interior's `caustics c` gives 1 + |cos|^(45 c)); 0: none.
     pub caustics: f64,
+    pub irid: Option<Irid>,
+}
+
+/// `irid { amount thickness t turbulence u }`: thin-film interference on the light that
+/// reaches the surface (see appearance::finish::irid_factor).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Irid {
+    pub amount: f64,
+    pub thickness: f64,
+    pub turbulence: f64,
 }
 
 impl Default for Finish {
@@ -632,6 +642,7 @@ impl Default for Finish {
             reflection: Reflection::default(),
             conserve_energy: false,
             crand: 0.0,
+            irid: None,
             fresnel: false,
             caustics: 0.0,
         }

@@ -641,7 +641,8 @@ impl Evaluator<'_> {
                     ev.next()?;
                 }
                 "irid_wavelength" => {
-                    ev.colour()?;
+                    let (c, _) = ev.colour()?;
+                    ev.scene.settings.irid_wavelength = super::value::colour_of(c).rgb;
                 }
                 _ if ev.skip_unsupported
                     && super::keywords::is_keyword(&word)

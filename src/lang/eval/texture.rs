@@ -1226,7 +1226,8 @@ impl Evaluator<'_> {
                     );
                     f.caustics = self.float()?;
                 }
-                "irid" | "ior" | "subsurface" | "fade_distance" | "fade_power" | "refraction" => {
+                "irid" => f.irid = Some(self.irid_block()?),
+                "ior" | "subsurface" | "fade_distance" | "fade_power" | "refraction" => {
                     return Err(self.unsupported(&tok, &word));
                 }
                 _ => return Err(self.stray_in_block(&tok, "the finish")),
@@ -1234,6 +1235,41 @@ impl Evaluator<'_> {
         }
         albedo.resolve(&mut f);
         Ok(f)
+    }
+
+    /// `irid { amount [thickness t] [turbulence u] }` (POV-Ray's defaults: thickness 0,
+    /// turbulence 0).
+    fn irid_block(&mut self) -> R<crate::scene::Irid> {
+        let open = self.expect(Punct::LBrace, "after `irid`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<crate::scene::Irid> {
+            let mut irid = crate::scene::Irid {
+                amount: self.float()?,
+                thickness: 0.0,
+                turbulence: 0.0,
+            };
+            loop {
+                let tok = self.peek()?;
+                match tok.ident() {
+                    Some("thickness") => {
+                        self.next()?;
+                        irid.thickness = self.float()?;
+                    }
+                    Some("turbulence") => {
+                        self.next()?;
+                        // A vector is accepted; its x is the amount, as in POV-Ray.
+                        let (v, span) = self.expr()?;
+                        irid.turbulence = self.to_vec3(&v, span)?.x;
+                    }
+                    _ if tok.is_punct(Punct::RBrace) => return Ok(irid),
+                    _ => return Err(self.stray_in_block(&tok, "the irid block")),
+                }
+            }
+        })();
+        self.leave();
+        let irid = r?;
+        self.expect(Punct::RBrace, "to close the irid block")?;
+        Ok(irid)
     }
 
     /// `phong [albedo] v` (and `diffuse`, `specular`): a plain value is set now; an albedo

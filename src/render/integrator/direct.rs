@@ -4,7 +4,9 @@
 
 use glam::DVec3;
 
-use crate::appearance::finish::{diffuse_term, metallic_tint, phong_factor, specular_factor};
+use crate::appearance::finish::{
+    diffuse_term, irid_factor, metallic_tint, phong_factor, specular_factor,
+};
 use crate::appearance::{perturbed_normal, texture_layers};
 use crate::geometry::{Hit, Ray, offset_point};
 use crate::render::dimensions::Purpose;
@@ -101,9 +103,14 @@ impl Integrator<'_> {
     ) -> DVec3 {
         let mut colour = layer.ambient_and_emission(self.scene.settings.ambient_light);
         for index in 0..self.scene.lights.len() {
-            let Some((at, light)) = self.light_arriving(s, index, sampler, counts) else {
+            let Some((at, mut light)) = self.light_arriving(s, index, sampler, counts) else {
                 continue;
             };
+            if let Some(irid) = &layer.finish.irid {
+                let wavelength = self.scene.settings.irid_wavelength;
+                let n_dot_v = -at.n.dot(at.d);
+                light *= irid_factor(irid, wavelength, at.n_dot_l, n_dot_v, s.surface.point);
+            }
             colour += layer.diffuse(at.n_dot_l, light);
             if !self.scene.lights[index].shadowless
                 && let Some(h) = layer.highlight(&at, light)
