@@ -186,8 +186,21 @@ pub const BUILTINS: &[Builtin] = &[
         Ok(Value::Vector(Vector::new3(v)))
     }),
     native("vstr", Exactly(5), vstr),
-    unsupported("vturbulence"),
+    native("vturbulence", Exactly(4), vturbulence),
 ];
+
+/// `vturbulence(lambda, omega, octaves, p)`: the displacement `warp { turbulence 1 }`
+/// with those settings gives p (the same sum, so the two agree exactly).
+fn vturbulence(ev: &mut Evaluator<'_>, c: &Call<'_>) -> R<Value> {
+    let t = crate::scene::Turbulence {
+        amount: glam::DVec3::ONE,
+        lambda: ev.arg_f(c, 0)?,
+        omega: ev.arg_f(c, 1)?,
+        octaves: ev.arg_f(c, 2)?.clamp(1.0, 10.0) as u32,
+    };
+    let d = crate::appearance::noise::dturbulence(ev.arg_v(c, 3)?, &t);
+    Ok(Value::Vector(Vector::new3(d)))
+}
 
 /// The table's entry for `name`, supported or not.
 pub fn builtin(name: &str) -> Option<&'static Builtin> {

@@ -654,7 +654,7 @@ impl Evaluator<'_> {
             Some("planar") => {
                 self.next()?;
                 let (mut normal, mut distance) = (DVec3::Z, 0.0);
-                if self.starts_float()? || self.peek()?.is_punct(Punct::Lt) {
+                if !self.peek()?.is_punct(Punct::RBrace) {
                     normal = self.vector3()?;
                     self.expect(Punct::Comma, "after the planar warp's normal")?;
                     distance = self.float()?;
