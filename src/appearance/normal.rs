@@ -93,6 +93,9 @@ pub fn perturb(normal: &Normal, p: DVec3, n: DVec3) -> DVec3 {
 /// `bump_size`) has no effect (measured with 0.2 and 3).
 fn blend_normals(normal: &Normal, p: DVec3, n: DVec3) -> DVec3 {
     let map = &normal.normal_map;
+    if matches!(normal.pattern.kind, crate::scene::PatternKind::Average) {
+        return average_normals(map, p, n);
+    }
     let value = pattern_value(&normal.pattern, normal.transform.inverse_point(p));
     match blend_position(map, value, |e| e.0) {
         Blend::None => n,
@@ -103,6 +106,15 @@ fn blend_normals(normal: &Normal, p: DVec3, n: DVec3) -> DVec3 {
             (a * (1.0 - w) + b * w).normalize_or(n)
         }
     }
+}
+
+/// `average normal_map`: the entries' unit normals weighted by their values, renormalised.
+fn average_normals(map: &[(f64, Normal)], p: DVec3, n: DVec3) -> DVec3 {
+    let mut sum = DVec3::ZERO;
+    for (w, entry) in map {
+        sum += perturb(entry, p, n) * *w;
+    }
+    sum.normalize_or(n)
 }
 
 /// The height a slope map gives a pattern value: between neighbouring entries a cubic

@@ -5,10 +5,11 @@
 use glam::DVec3;
 
 use crate::geometry::TexturePoint;
-use crate::scene::{Colour, Finish, Pigment, PigmentKind, Texture, TextureMap};
+use crate::scene::{Colour, Finish, PatternKind, Pigment, PigmentKind, Texture, TextureMap};
 
 use super::blend::{Blend, blend_position, mix};
 use super::evaluate_pigment;
+use super::noise::lattice_hash;
 use super::normal::perturb;
 use super::pattern::pattern_value;
 
@@ -116,6 +117,12 @@ fn push_texture<'a>(layers: &mut Layers<'a>, t: &'a Texture, p: TexturePoint, de
     if let Some(map) = &t.map
         && depth < MAX_NESTING
     {
+        if matches!(map.pattern.kind, PatternKind::Average) {
+            if let Some(i) = average_pick(map, p.world) {
+                push_texture(layers, &map.entries[i].1, p, depth + 1);
+            }
+            return;
+        }
         let q = map.transform.inverse_point(map_point(map, p));
         let v = pattern_value(&map.pattern, q);
         match blend_position(&map.entries, v, |e| e.0) {
@@ -153,6 +160,13 @@ pub fn perturbed_normal(texture: &Texture, at: impl Into<TexturePoint>, n: DVec3
     for _ in 0..MAX_NESTING {
         let Some(map) = &t.map else { break };
         let v = pattern_value(&map.pattern, map.transform.inverse_point(map_point(map, p)));
+        if matches!(map.pattern.kind, PatternKind::Average) {
+            match average_pick(map, p.world) {
+                Some(i) => t = &map.entries[i].1,
+                None => return n,
+            }
+            continue;
+        }
         t = match blend_position(&map.entries, v, |e| e.0) {
             Blend::One(i) => &map.entries[i].1,
             Blend::Two(i, w) => &map.entries[if w < 0.5 { i } else { i + 1 }].1,
@@ -164,6 +178,31 @@ pub fn perturbed_normal(texture: &Texture, at: impl Into<TexturePoint>, n: DVec3
         None => n,
     }
 }
+
+/// `average texture_map`: POV-Ray shades every entry fully (its own finish and normal) and
+/// averages the results by weight. penumbra picks one entry per hit point instead, with
+/// probability weight / total from a hash of the point, so that each sample shades one
+/// whole texture and the pixel's expectation is POV-Ray's average. Texture and normal
+/// read the same pick, as both hash the same point.
+fn average_pick(map: &TextureMap, world: DVec3) -> Option<usize> {
+    let total: f64 = map.entries.iter().map(|e| e.0.max(0.0)).sum();
+    if !(total > 0.0) {
+        return None;
+    }
+    let bits = world.to_array().map(|c| c.to_bits());
+    let mix = |b: u64| (b ^ (b >> 32)) as i64;
+    let h = lattice_hash(mix(bits[0]), mix(bits[1]), mix(bits[2]), AVERAGE_SEED);
+    let mut u = f64::from(h) / (f64::from(u32::MAX) + 1.0) * total;
+    for (i, (w, _)) in map.entries.iter().enumerate() {
+        u -= w.max(0.0);
+        if u < 0.0 {
+            return Some(i);
+        }
+    }
+    map.entries.iter().rposition(|e| e.0 > 0.0)
+}
+
+const AVERAGE_SEED: u32 = 0x1f83_d9ab;
 
 /// Where a texture map's pattern is evaluated: the world point, or (u, v, 0).
 fn map_point(map: &TextureMap, p: TexturePoint) -> DVec3 {

@@ -909,11 +909,7 @@ impl Evaluator<'_> {
             "pigment map",
             |_| Ok(Vec::new()),
             |ev, map| {
-                let v = if average && !ev.starts_float()? {
-                    1.0
-                } else {
-                    ev.float()?
-                };
+                let v = ev.map_weight(average)?;
                 ev.eat(Punct::Comma)?;
                 // Entries are pigment bodies: `[0.5 checker rgb 1, rgb 0]`, `[1 Named]`.
                 let p = if ev.peek()?.is_ident(ev.pigment_word()) {
@@ -927,14 +923,14 @@ impl Evaluator<'_> {
         )
     }
 
-    /// `{ [v texture {...}] ... }` after `texture_map`.
-    fn texture_map_body(&mut self) -> R<Vec<(f64, Texture)>> {
+    /// `{ [v texture {...}] ... }` after `texture_map` (v optional under `average`).
+    fn texture_map_body(&mut self, average: bool) -> R<Vec<(f64, Texture)>> {
         self.read_map_entries(
             "texture_map",
             "texture map",
             |_| Ok(Vec::new()),
             |ev, map| {
-                let v = ev.float()?;
+                let v = ev.map_weight(average)?;
                 ev.eat(Punct::Comma)?;
                 // Entries are texture bodies: `[0.5 T_Named]`, `[1 pigment {...} finish {...}]`.
                 let t = if ev.peek()?.is_ident("texture") {
@@ -947,6 +943,16 @@ impl Evaluator<'_> {
                 Ok(())
             },
         )
+    }
+
+    /// A map entry's value; under `average` it is a weight that may be left out (1, as
+    /// POV-Ray's).
+    fn map_weight(&mut self, average: bool) -> R<f64> {
+        if average && !self.starts_float()? {
+            Ok(1.0)
+        } else {
+            self.float()
+        }
     }
 
     /// `{ ... }` after `normal`.
@@ -982,7 +988,6 @@ impl Evaluator<'_> {
                 continue;
             }
             match word.as_str() {
-                "average" => return Err(self.unsupported(&tok, "average normal_map")),
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
@@ -1024,7 +1029,10 @@ impl Evaluator<'_> {
                 }
                 "normal_map" => {
                     self.next()?;
-                    let map = self.normal_map_body()?;
+                    let average = n
+                        .as_ref()
+                        .is_some_and(|n| matches!(n.pattern.kind, PatternKind::Average));
+                    let map = self.normal_map_body(average)?;
                     match &mut n {
                         Some(n) => n.normal_map = map,
                         None => {
@@ -1091,13 +1099,13 @@ impl Evaluator<'_> {
 
     /// `{ [v normal body] ... }` after `normal_map`: entries are bare normal bodies
     /// (`[0.5 bumps 0.3 scale 2]`); POV-Ray rejects a `normal {...}` wrapper there.
-    fn normal_map_body(&mut self) -> R<Vec<(f64, Normal)>> {
+    fn normal_map_body(&mut self, average: bool) -> R<Vec<(f64, Normal)>> {
         self.read_map_entries(
             "normal_map",
             "normal map",
             |_| Ok(Vec::new()),
             |ev, map| {
-                let v = ev.float()?;
+                let v = ev.map_weight(average)?;
                 ev.eat(Punct::Comma)?;
                 let n = ev.normal_items(None, Punct::RBracket)?;
                 // An entry without a pattern leaves the normal as it is.
@@ -1401,13 +1409,16 @@ impl Evaluator<'_> {
                 }
                 "texture_map" => {
                     self.next()?;
-                    let entries = self.texture_map_body()?;
+                    let average = t
+                        .map
+                        .as_ref()
+                        .is_some_and(|m| matches!(m.pattern.kind, PatternKind::Average));
+                    let entries = self.texture_map_body(average)?;
                     let Some(map) = &mut t.map else {
                         return Err(self.err(tok.span, "`texture_map` needs a pattern before it"));
                     };
                     map.entries = entries;
                 }
-                "average" => return Err(self.unsupported(&tok, "average texture_map")),
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
