@@ -1429,6 +1429,10 @@ impl Evaluator<'_> {
                         uv_mapping: false,
                     }));
                 }
+                "tiles" => {
+                    self.next()?;
+                    t.map = Some(Box::new(self.tiles_body()?));
+                }
                 "uv_mapping" => {
                     self.next()?;
                     uv_mapping = true;
@@ -1544,6 +1548,49 @@ impl Evaluator<'_> {
             }
         }
         Ok(())
+    }
+
+    /// `tiles { texture {A}... tile2 texture {B}... }`: POV-Ray's older form of a checker of
+    /// textures; several textures in a group layer as they do on an object.
+    fn tiles_body(&mut self) -> R<TextureMap> {
+        let open = self.expect(Punct::LBrace, "after `tiles`")?;
+        self.enter(open.span)?;
+        let r = (|| -> R<TextureMap> {
+            let first = self.tile_textures()?;
+            let tok = self.next()?;
+            if !tok.is_ident("tile2") {
+                return Err(self.expected("`tile2` and the second tile's texture", &tok));
+            }
+            let second = self.tile_textures()?;
+            Ok(TextureMap {
+                pattern: self.new_pattern(PatternKind::Checker),
+                transform: Transform::IDENTITY,
+                // Measured: the first tile lies where checker puts its second entry.
+                entries: vec![(0.0, second), (1.0, first)],
+                uv_mapping: false,
+            })
+        })();
+        self.leave();
+        let map = r?;
+        self.expect(Punct::RBrace, "to close the tiles")?;
+        Ok(map)
+    }
+
+    /// One tile's textures: at least one `texture { }`, later ones layered on top.
+    fn tile_textures(&mut self) -> R<Texture> {
+        let mut group: Option<Texture> = None;
+        while self.peek()?.is_ident("texture") {
+            self.next()?;
+            let top = self.texture_body(self.default_texture.clone())?;
+            group = Some(Self::layer_texture(group, top));
+        }
+        match group {
+            Some(t) => Ok(t),
+            None => {
+                let tok = self.peek()?;
+                Err(self.expected("a `texture` for the tile", &tok))
+            }
+        }
     }
 
     /// A second `texture` on an object goes on top of the ones before it.
