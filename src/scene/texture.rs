@@ -221,6 +221,12 @@ pub enum PatternKind {
     Fractal(Fractal),
     /// `cells`: one random value in [0, 1) per unit cube.
     Cells,
+    /// `image_pattern { png "file" }`: the image's grey (0.297 r + 0.589 g + 0.114 b) or,
+    /// with `use_alpha`, its transparency.
+    ImagePattern {
+        image: std::sync::Arc<ImageMap>,
+        use_alpha: bool,
+    },
 }
 
 impl PatternKind {

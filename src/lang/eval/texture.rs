@@ -22,7 +22,6 @@ type R<T> = Result<T, Diagnostic>;
 const UNSUPPORTED_PATTERNS: &[&str] = &[
     "aoi",
     "facets",
-    "image_pattern",
     "pavement",
     "slope",
     "square",
@@ -35,6 +34,7 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
 
 /// Pattern keywords penumbra models.
 const PATTERNS: &[&str] = &[
+    "image_pattern",
     "density_file",
     "quilted",
     "mandel",
@@ -495,6 +495,13 @@ impl Evaluator<'_> {
             "cells" => PatternKind::Cells,
             "mandel" | "julia" | "magnet" => PatternKind::Fractal(self.fractal(word)?),
             "average" => PatternKind::Average,
+            "image_pattern" => {
+                let (image, use_alpha) = self.image_body("image_pattern", true)?;
+                PatternKind::ImagePattern {
+                    image: std::sync::Arc::new(image),
+                    use_alpha,
+                }
+            }
             "density_file" => PatternKind::DensityFile(std::sync::Arc::new(self.density_file()?)),
             "function" => {
                 let span = self.peek()?.span;
@@ -1607,8 +1614,16 @@ impl Evaluator<'_> {
 impl Evaluator<'_> {
     /// `{ png "file" ... }` after `image_map`; the file is found like an include file.
     fn image_map_body(&mut self) -> R<ImageMap> {
-        let open = self.expect(Punct::LBrace, "after `image_map`")?;
+        self.image_body("image_map", false).map(|(im, _)| im)
+    }
+
+    /// `{ png "file" ... }` after `image_map`, or (`data`) after `image_pattern`, whose
+    /// values POV-Ray reads as they are in the file, without gamma (measured: grey 128
+    /// gives 0.502 in a 3.7 scene), and which may say `use_alpha` (the flag returned).
+    fn image_body(&mut self, keyword: &str, data: bool) -> R<(ImageMap, bool)> {
+        let open = self.expect(Punct::LBrace, &format!("after `{keyword}`"))?;
         self.enter(open.span)?;
+        let mut use_alpha = false;
         let r = (|| -> R<ImageMap> {
             let tok = self.peek()?;
             match tok.ident() {
@@ -1631,7 +1646,7 @@ impl Evaluator<'_> {
             let Some(path) = self.resolve_include(&name) else {
                 return Err(self.err(span, format!("cannot find the image \"{name}\"")));
             };
-            let working = if self.scene.legacy() {
+            let working = if data || self.scene.legacy() {
                 ImageGamma::Raw
             } else {
                 ImageGamma::Working(self.scene.settings.assumed_gamma.unwrap_or(1.0))
@@ -1693,6 +1708,14 @@ impl Evaluator<'_> {
                         let t = tok;
                         return Err(self.unsupported(&t, "image gamma"));
                     }
+                    Some("use_alpha") if data => {
+                        self.next()?;
+                        use_alpha = true;
+                    }
+                    Some("use_colour" | "use_color" | "use_index") if data => {
+                        self.next()?;
+                        use_alpha = false;
+                    }
                     _ => return Err(self.stray_in_block(&tok, "the image map")),
                 }
             }
@@ -1700,7 +1723,7 @@ impl Evaluator<'_> {
         self.leave();
         let im = r?;
         self.expect(Punct::RBrace, "to close the image map")?;
-        Ok(im)
+        Ok((im, use_alpha))
     }
 }
 
