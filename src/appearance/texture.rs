@@ -186,7 +186,7 @@ pub fn perturbed_normal(texture: &Texture, at: impl Into<TexturePoint>, n: DVec3
 /// read the same pick, as both hash the same point.
 fn average_pick(map: &TextureMap, world: DVec3) -> Option<usize> {
     let total: f64 = map.entries.iter().map(|e| e.0.max(0.0)).sum();
-    if !(total > 0.0) {
+    if total <= 0.0 || total.is_nan() {
         return None;
     }
     let bits = world.to_array().map(|c| c.to_bits());

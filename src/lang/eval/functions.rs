@@ -545,6 +545,7 @@ mod tests {
             "vnormalize" => "<1, 2, 3>",
             "vrotate" => "x, <0, 0, 90>",
             "vstr" => "3, <1, 2, 3>, \",\", 0, 1",
+            "vturbulence" => "2, 0.5, 6, <1, 2, 3>",
             "inside" => "Obj, <0, 0, 0>",
             "max_extent" | "min_extent" => "Obj",
             "trace" => "Obj, <0, 0, -5>, z, N",

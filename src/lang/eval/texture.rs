@@ -721,7 +721,7 @@ impl Evaluator<'_> {
         self.expect(Punct::Comma, "after the black hole's centre")?;
         let tok = self.peek()?;
         let radius = self.float()?;
-        if !(radius > 0.0) {
+        if radius <= 0.0 || radius.is_nan() {
             return Err(self.err(tok.span, "a black hole's radius must be positive"));
         }
         let mut b = BlackHole {
@@ -1617,6 +1617,48 @@ impl Evaluator<'_> {
         self.image_body("image_map", false).map(|(im, _)| im)
     }
 
+    /// The image file at the start of an image block (`png "file"`), loaded as an image
+    /// map with default settings.
+    fn image_file(&mut self, data: bool) -> R<ImageMap> {
+        let tok = self.peek()?;
+        match tok.ident() {
+            Some("png") => {
+                self.next()?;
+            }
+            Some(
+                w @ ("gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "hdr"
+                | "exr" | "bmp"),
+            ) => {
+                let w = w.to_string();
+                return Err(self.unsupported(&tok, &format!("{w} images")));
+            }
+            _ => {}
+        }
+        let (v, span) = self.expr()?;
+        let Value::Str(name) = v else {
+            return Err(self.err(span, "expected the image file name as a string"));
+        };
+        let Some(path) = self.resolve_include(&name) else {
+            return Err(self.err(span, format!("cannot find the image \"{name}\"")));
+        };
+        let working = if data || self.scene.legacy() {
+            ImageGamma::Raw
+        } else {
+            ImageGamma::Working(self.scene.settings.assumed_gamma.unwrap_or(1.0))
+        };
+        let image = load_png(&path, working).map_err(|e| self.err(span, e))?;
+        Ok(ImageMap {
+            image: std::sync::Arc::new(image),
+            map_type: MapType::Planar,
+            bilinear: false,
+            once: false,
+            filter_all: 0.0,
+            transmit_all: 0.0,
+            turbulence: None,
+            warps: Vec::new(),
+        })
+    }
+
     /// `{ png "file" ... }` after `image_map`, or (`data`) after `image_pattern`, whose
     /// values POV-Ray reads as they are in the file, without gamma (measured: grey 128
     /// gives 0.502 in a 3.7 scene), and which may say `use_alpha` (the flag returned).
@@ -1625,43 +1667,7 @@ impl Evaluator<'_> {
         self.enter(open.span)?;
         let mut use_alpha = false;
         let r = (|| -> R<ImageMap> {
-            let tok = self.peek()?;
-            match tok.ident() {
-                Some("png") => {
-                    self.next()?;
-                }
-                Some(
-                    w @ ("gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "hdr"
-                    | "exr" | "bmp"),
-                ) => {
-                    let w = w.to_string();
-                    return Err(self.unsupported(&tok, &format!("{w} images")));
-                }
-                _ => {}
-            }
-            let (v, span) = self.expr()?;
-            let Value::Str(name) = v else {
-                return Err(self.err(span, "expected the image file name as a string"));
-            };
-            let Some(path) = self.resolve_include(&name) else {
-                return Err(self.err(span, format!("cannot find the image \"{name}\"")));
-            };
-            let working = if data || self.scene.legacy() {
-                ImageGamma::Raw
-            } else {
-                ImageGamma::Working(self.scene.settings.assumed_gamma.unwrap_or(1.0))
-            };
-            let image = load_png(&path, working).map_err(|e| self.err(span, e))?;
-            let mut im = ImageMap {
-                image: std::sync::Arc::new(image),
-                map_type: MapType::Planar,
-                bilinear: false,
-                once: false,
-                filter_all: 0.0,
-                transmit_all: 0.0,
-                turbulence: None,
-                warps: Vec::new(),
-            };
+            let mut im = self.image_file(data)?;
             loop {
                 let tok = self.peek()?;
                 if tok.is_punct(Punct::RBrace) {
