@@ -32,6 +32,8 @@ pub enum Projection {
     /// `cylinder 1..4`: vertical or horizontal, from a fixed point or a moving one.
     Cylinder(u8),
     Spherical,
+    /// A 180-degree dome view whose lower part is cut off (measured; src/render/camera.rs).
+    Omnimax,
 }
 
 impl Projection {

@@ -300,7 +300,7 @@ impl Evaluator<'_> {
                 };
                 match word {
                     "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle"
-                    | "panoramic" | "spherical" => {
+                    | "panoramic" | "spherical" | "omnimax" => {
                         let word = word.to_string();
                         ev.next()?;
                         spec.projection = match word.as_str() {
@@ -309,6 +309,7 @@ impl Evaluator<'_> {
                             "fisheye" => Projection::Fisheye,
                             "ultra_wide_angle" => Projection::UltraWideAngle,
                             "panoramic" => Projection::Panoramic,
+                            "omnimax" => Projection::Omnimax,
                             _ => Projection::Spherical,
                         };
                     }
@@ -372,7 +373,7 @@ impl Evaluator<'_> {
                         ev.next()?;
                         ev.float()?;
                     }
-                    "omnimax" | "mesh_camera" | "normal" => {
+                    "mesh_camera" | "normal" => {
                         let word = word.to_string();
                         ev.unsupported_or_skip(tok, &word)?;
                     }
