@@ -373,7 +373,11 @@ impl Evaluator<'_> {
                         ev.next()?;
                         ev.float()?;
                     }
-                    "mesh_camera" | "normal" => {
+                    "normal" => {
+                        ev.next()?;
+                        spec.normal = ev.normal_body(spec.normal.take())?;
+                    }
+                    "mesh_camera" => {
                         let word = word.to_string();
                         ev.unsupported_or_skip(tok, &word)?;
                     }
