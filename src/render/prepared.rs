@@ -48,6 +48,8 @@ pub struct Material {
     pub interior_id: u32,
     /// `hollow`: fog goes on inside the object.
     pub hollow: bool,
+    /// Which lights shade it (`scene::LightGroup`).
+    pub light_group: Option<crate::scene::LightGroup>,
 }
 
 #[derive(Clone, Debug)]
@@ -146,6 +148,7 @@ fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
         hollow: f.hollow || inherited.hollow,
         inverse: f.inverse,
         double_illuminate: f.double_illuminate || inherited.double_illuminate,
+        light_group: f.light_group.or(inherited.light_group),
     }
 }
 
@@ -442,6 +445,7 @@ impl Builder {
             ),
             interior_id,
             hollow: looks.flags.hollow,
+            light_group: looks.flags.light_group,
         });
         (self.materials.len() - 1) as u32
     }

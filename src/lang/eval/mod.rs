@@ -103,6 +103,8 @@ pub struct Evaluator<'w> {
     fonts: std::collections::HashMap<PathBuf, crate::scene::text::Font>,
     /// Objects built for `trace`, `inside` and the extents.
     placements: placement::Placements,
+    /// How many `light_group`s have been read: the next one's id.
+    light_groups: u32,
 }
 
 impl<'w> Evaluator<'w> {
@@ -141,6 +143,7 @@ impl<'w> Evaluator<'w> {
             allow_write: None,
             fonts: std::collections::HashMap::new(),
             placements: placement::Placements::default(),
+            light_groups: 0,
         }
     }
 

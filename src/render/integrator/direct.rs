@@ -12,7 +12,7 @@ use crate::render::lights::LightSamples;
 use crate::render::lights::{AreaLightMode, PreparedArea, PreparedLight};
 use crate::render::prepared::{Material, PreparedScene};
 use crate::render::sampler::{PixelSampler, permute};
-use crate::scene::{Colour, Finish};
+use crate::scene::{Colour, Finish, LightGroup};
 
 use super::interiors::InteriorStack;
 use super::optics::{caustic_factor, fade};
@@ -101,6 +101,9 @@ impl Integrator<'_> {
     ) -> DVec3 {
         let mut colour = layer.ambient_and_emission(self.scene.settings.ambient_light);
         for index in 0..self.scene.lights.len() {
+            if !LightGroup::lights(self.scene.lights[index].group, s.material.light_group) {
+                continue;
+            }
             let Some((at, light)) = self.light_arriving(s, index, sampler, counts) else {
                 continue;
             };

@@ -237,6 +237,7 @@ mod tests {
         let material = Material {
             texture: Default::default(),
             double_illuminate: false,
+            light_group: None,
             transmits: true,
             interior: crate::scene::Interior {
                 ior: 1.5,
