@@ -320,6 +320,9 @@ pub struct Object {
     pub shape: Shape,
     pub transform: Transform,
     pub texture: Option<Arc<Texture>>,
+    /// `interior_texture { }`: the texture on the surface's inner side, where a ray meets
+    /// it going along its outward normal (`None`: inherited, else the texture).
+    pub interior_texture: Option<Arc<Texture>>,
     pub interior: Option<Interior>,
     pub flags: ObjectFlags,
     /// `clipped_by { ... }`: only the parts of the surface inside all of these remain.
@@ -335,6 +338,7 @@ impl Object {
             shape,
             transform: Transform::IDENTITY,
             texture: None,
+            interior_texture: None,
             interior: None,
             flags: ObjectFlags::default(),
             clipped_by: Vec::new(),
@@ -349,6 +353,9 @@ impl Object {
     pub fn transform_by(&mut self, t: &Transform) {
         self.transform = self.transform.then(t);
         if let Some(texture) = &mut self.texture {
+            Arc::make_mut(texture).transform_by(t);
+        }
+        if let Some(texture) = &mut self.interior_texture {
             Arc::make_mut(texture).transform_by(t);
         }
         if let Some(interior) = &mut self.interior {

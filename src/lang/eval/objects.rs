@@ -537,7 +537,12 @@ impl Evaluator<'_> {
                 self.next()?;
                 self.optional_bool()?;
             }
-            "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
+            "interior_texture" => {
+                self.next()?;
+                let t = self.texture_body(self.default_texture.clone())?;
+                object.interior_texture = Some(self.share_texture(t));
+            }
+            "photons" | "radiosity" | "no_radiosity" => {
                 self.unsupported_or_skip(tok, word)?;
             }
             _ => return Ok(false),

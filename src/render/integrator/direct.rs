@@ -344,7 +344,11 @@ impl Integrator<'_> {
         let mut filter = DVec3::ONE;
         scene.world.shadow_hits(ray, t_max, |hit| {
             let index = scene.world.hit_material(hit);
-            let material = &scene.materials[index as usize];
+            let mut material = &scene.materials[index as usize];
+            if material.inner.is_some() {
+                let back = scene.world.surface(ray, hit).normal.dot(ray.direction) > 0.0;
+                material = scene.side_material(index, back);
+            }
             if !material.transmits {
                 filter = DVec3::ZERO;
                 return false;

@@ -238,6 +238,7 @@ mod tests {
             texture: Default::default(),
             double_illuminate: false,
             light_group: None,
+            inner: None,
             transmits: true,
             interior: crate::scene::Interior {
                 ior: 1.5,
