@@ -105,6 +105,9 @@ pub struct Evaluator<'w> {
     placements: placement::Placements,
     /// How many `light_group`s have been read: the next one's id.
     light_groups: u32,
+    /// Whether the `#version 3.8` warning was given (include files switch versions back and
+    /// forth; once is enough).
+    warned_version_3_8: bool,
 }
 
 impl<'w> Evaluator<'w> {
@@ -144,6 +147,7 @@ impl<'w> Evaluator<'w> {
             fonts: std::collections::HashMap::new(),
             placements: placement::Placements::default(),
             light_groups: 0,
+            warned_version_3_8: false,
         }
     }
 
