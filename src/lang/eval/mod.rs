@@ -18,6 +18,7 @@ mod directives;
 mod expr;
 mod fog;
 mod functions;
+pub use functions::builtins_markdown;
 mod height_field;
 mod isosurface;
 mod items;
