@@ -21,7 +21,7 @@ pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{
     BicubicPatch, Blob, BlobComponent, BlobComponentKind, Glyph, HeightField, Isosurface, Lathe,
-    Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
+    LightGroup, Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
 };
 pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,

@@ -298,20 +298,12 @@ impl Evaluator<'_> {
                 let Some(word) = tok.ident() else {
                     return Err(ev.stray_in_block(tok, "the camera"));
                 };
+                if let Some(projection) = projection_keyword(word) {
+                    ev.next()?;
+                    spec.projection = projection;
+                    return Ok(());
+                }
                 match word {
-                    "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle"
-                    | "panoramic" | "spherical" => {
-                        let word = word.to_string();
-                        ev.next()?;
-                        spec.projection = match word.as_str() {
-                            "perspective" => Projection::Perspective,
-                            "orthographic" => Projection::Orthographic,
-                            "fisheye" => Projection::Fisheye,
-                            "ultra_wide_angle" => Projection::UltraWideAngle,
-                            "panoramic" => Projection::Panoramic,
-                            _ => Projection::Spherical,
-                        };
-                    }
                     "cylinder" => {
                         let tok = ev.next()?;
                         let kind = ev.float()?;
@@ -372,7 +364,11 @@ impl Evaluator<'_> {
                         ev.next()?;
                         ev.float()?;
                     }
-                    "omnimax" | "mesh_camera" | "normal" => {
+                    "normal" => {
+                        ev.next()?;
+                        spec.normal = ev.normal_body(spec.normal.take())?;
+                    }
+                    "mesh_camera" => {
                         let word = word.to_string();
                         ev.unsupported_or_skip(tok, &word)?;
                     }
@@ -793,4 +789,18 @@ pub fn starts_statement(word: &str) -> bool {
         || matches!(word, "sky_sphere" | "fog" | "rainbow" | "media")
         || super::objects::is_object_keyword(word)
         || super::objects::is_known_unsupported_shape(word)
+}
+
+/// The projection a camera keyword names (`cylinder` takes a number and is read apart).
+fn projection_keyword(word: &str) -> Option<Projection> {
+    Some(match word {
+        "perspective" => Projection::Perspective,
+        "orthographic" => Projection::Orthographic,
+        "fisheye" => Projection::Fisheye,
+        "ultra_wide_angle" => Projection::UltraWideAngle,
+        "panoramic" => Projection::Panoramic,
+        "omnimax" => Projection::Omnimax,
+        "spherical" => Projection::Spherical,
+        _ => return None,
+    })
 }

@@ -12,7 +12,7 @@ use crate::render::lights::LightSamples;
 use crate::render::lights::{AreaLightMode, PreparedArea, PreparedLight};
 use crate::render::prepared::{Material, PreparedScene};
 use crate::render::sampler::{PixelSampler, permute};
-use crate::scene::{Colour, Finish};
+use crate::scene::{Colour, Finish, LightGroup};
 
 use super::interiors::InteriorStack;
 use super::optics::{caustic_factor, fade};
@@ -101,6 +101,9 @@ impl Integrator<'_> {
     ) -> DVec3 {
         let mut colour = layer.ambient_and_emission(self.scene.settings.ambient_light);
         for index in 0..self.scene.lights.len() {
+            if !LightGroup::lights(self.scene.lights[index].group, s.material.light_group) {
+                continue;
+            }
             let Some((at, light)) = self.light_arriving(s, index, sampler, counts) else {
                 continue;
             };
@@ -341,7 +344,11 @@ impl Integrator<'_> {
         let mut filter = DVec3::ONE;
         scene.world.shadow_hits(ray, t_max, |hit| {
             let index = scene.world.hit_material(hit);
-            let material = &scene.materials[index as usize];
+            let mut material = &scene.materials[index as usize];
+            if material.inner.is_some() {
+                let back = scene.world.surface(ray, hit).normal.dot(ray.direction) > 0.0;
+                material = scene.side_material(index, back);
+            }
             if !material.transmits {
                 filter = DVec3::ZERO;
                 return false;

@@ -237,6 +237,8 @@ mod tests {
         let material = Material {
             texture: Default::default(),
             double_illuminate: false,
+            light_group: None,
+            inner: None,
             transmits: true,
             interior: crate::scene::Interior {
                 ior: 1.5,

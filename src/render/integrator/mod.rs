@@ -250,11 +250,11 @@ impl<'a> Integrator<'a> {
 
     fn shading(&self, ray: &Ray, hit: &Hit, path: Path) -> Shading<'a> {
         let surface = self.scene.world.surface(ray, hit);
-        let material = &self.scene.materials[surface.material as usize];
         let d = ray.direction.normalize();
         // The ray meets the surface from behind, and whether it leaves the interior (the
         // two differ where parts of one object touch or overlap).
         let back = surface.normal.dot(d) > 0.0;
+        let material = self.scene.side_material(surface.material, back);
         let leaving = back || path.interiors.contains(material.interior_id);
         let fade_through = if leaving && material.interior.fade_distance > 0.0 {
             fade(material, hit.t * ray.direction.length())
