@@ -80,6 +80,7 @@ impl PreparedScene {
         let optional = OptionalDecisions {
             media: !self.media.is_empty(),
             dispersion: self.materials.iter().any(|m| m.interior.disperses()),
+            diffuse: self.settings.radiosity.is_some(),
             ..OptionalDecisions::default()
         };
         DimensionLayout::new(self.lights.len(), optional)
@@ -146,6 +147,7 @@ fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
         hollow: f.hollow || inherited.hollow,
         inverse: f.inverse,
         double_illuminate: f.double_illuminate || inherited.double_illuminate,
+        no_radiosity: f.no_radiosity || inherited.no_radiosity,
     }
 }
 
@@ -688,6 +690,9 @@ fn mask(f: ObjectFlags) -> u8 {
     }
     if f.no_reflection {
         m |= flags::NO_REFLECTION;
+    }
+    if f.no_radiosity {
+        m |= flags::NO_RADIOSITY;
     }
     if f.inverse {
         m |= flags::INVERSE;

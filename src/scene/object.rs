@@ -285,6 +285,8 @@ pub struct ObjectFlags {
     pub hollow: bool,
     pub inverse: bool,
     pub double_illuminate: bool,
+    /// Unseen by radiosity rays (they pass through it); still lit by radiosity itself.
+    pub no_radiosity: bool,
 }
 
 /// A shape with its placement and appearance. `transform` maps the shape's own coordinates

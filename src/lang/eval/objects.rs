@@ -510,7 +510,9 @@ impl Evaluator<'_> {
                 self.next()?;
                 self.optional_bool()?;
             }
-            "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
+            "no_radiosity" => flag(self, &mut object.flags.no_radiosity)?,
+            "radiosity" => self.object_radiosity()?,
+            "photons" | "interior_texture" => {
                 self.unsupported_or_skip(tok, word)?;
             }
             _ => return Ok(false),
