@@ -39,7 +39,10 @@ sphere {{ 0, 1 pigment {{ rgb 1 }}
     fn exact(&self) -> f64 {
         let direct = self.emission + self.rho * self.light;
         let k = self.brightness * self.rho;
-        direct * (0..=self.recursion_limit).map(|i| k.powi(i as i32)).sum::<f64>()
+        direct
+            * (0..=self.recursion_limit)
+                .map(|i| k.powi(i as i32))
+                .sum::<f64>()
     }
 }
 
