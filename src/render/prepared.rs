@@ -85,6 +85,7 @@ impl PreparedScene {
         let optional = OptionalDecisions {
             media: !self.media.is_empty(),
             dispersion: self.materials.iter().any(|m| m.interior.disperses()),
+            diffuse: self.settings.radiosity.is_some(),
             ..OptionalDecisions::default()
         };
         DimensionLayout::new(self.lights.len(), optional)
@@ -165,6 +166,7 @@ fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
         inverse: f.inverse,
         double_illuminate: f.double_illuminate || inherited.double_illuminate,
         light_group: f.light_group.or(inherited.light_group),
+        no_radiosity: f.no_radiosity || inherited.no_radiosity,
     }
 }
 
@@ -724,6 +726,9 @@ fn mask(f: ObjectFlags) -> u8 {
     }
     if f.no_reflection {
         m |= flags::NO_REFLECTION;
+    }
+    if f.no_radiosity {
+        m |= flags::NO_RADIOSITY;
     }
     if f.inverse {
         m |= flags::INVERSE;

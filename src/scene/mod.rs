@@ -10,6 +10,7 @@ mod light;
 mod media;
 mod object;
 pub mod path_spline;
+mod radiosity;
 pub mod spline;
 pub mod text;
 mod texture;
@@ -23,6 +24,7 @@ pub use object::{
     BicubicPatch, Blob, BlobComponent, BlobComponentKind, Glyph, HeightField, Isosurface, Lathe,
     LightGroup, Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
 };
+pub use radiosity::{GREY_WEIGHTS, Radiosity, RadiosityCache};
 pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
 };
@@ -90,6 +92,8 @@ pub struct GlobalSettings {
     /// `noise_generator` in global_settings: the default for patterns that name none
     /// (applies to patterns read after it).
     pub noise_generator: u8,
+    /// `radiosity { }`: diffuse interreflection, when the block is there.
+    pub radiosity: Option<Radiosity>,
 }
 
 impl Default for GlobalSettings {
@@ -100,6 +104,7 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: 2,
+            radiosity: None,
         }
     }
 }

@@ -308,6 +308,8 @@ pub struct ObjectFlags {
     pub double_illuminate: bool,
     /// The innermost `light_group` the object is in.
     pub light_group: Option<LightGroup>,
+    /// Unseen by radiosity rays (they pass through it); still lit by radiosity itself.
+    pub no_radiosity: bool,
 }
 
 /// A shape with its placement and appearance. `transform` maps the shape's own coordinates

@@ -12,7 +12,7 @@ use crate::scene::{AreaLight, CameraSpec, Light, LightKind, Projection};
 type R<T> = Result<T, Diagnostic>;
 
 /// Features POV-Ray has at the top level that penumbra does not model yet.
-const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "photons", "radiosity"];
+const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "photons"];
 
 impl Evaluator<'_> {
     pub(super) fn item(&mut self) -> R<()> {
@@ -617,6 +617,10 @@ impl Evaluator<'_> {
                     ev.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
                 }
                 "adc_bailout" => ev.scene.settings.adc_bailout = ev.float()?,
+                "radiosity" => {
+                    let start = ev.scene.settings.radiosity.unwrap_or_default();
+                    ev.scene.settings.radiosity = Some(ev.radiosity_block(start)?);
+                }
                 "ambient_light" => {
                     let (c, _) = ev.colour()?;
                     ev.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);

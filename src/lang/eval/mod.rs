@@ -29,6 +29,7 @@ mod objects;
 mod path_splines;
 mod placement;
 mod poly;
+mod radiosity;
 mod stream;
 mod sweeps;
 mod text;

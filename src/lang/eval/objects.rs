@@ -542,7 +542,9 @@ impl Evaluator<'_> {
                 let t = self.texture_body(self.default_texture.clone())?;
                 object.interior_texture = Some(self.share_texture(t));
             }
-            "photons" | "radiosity" | "no_radiosity" => {
+            "no_radiosity" => flag(self, &mut object.flags.no_radiosity)?,
+            "radiosity" => self.object_radiosity()?,
+            "photons" => {
                 self.unsupported_or_skip(tok, word)?;
             }
             _ => return Ok(false),

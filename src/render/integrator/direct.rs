@@ -45,6 +45,12 @@ impl ShadedLayer<'_> {
         colour
     }
 
+    /// What the layer reflects of the light radiosity gathers: pigment, the diffuse value
+    /// as written, opacity.
+    pub(super) fn radiosity_albedo(&self) -> DVec3 {
+        self.pigment.rgb * self.finish.radiosity_diffuse * self.att
+    }
+
     /// The diffuse light from a light of colour `light` (already shadowed) at N.L `n_dot_l`.
     pub(super) fn diffuse(&self, n_dot_l: f64, light: DVec3) -> DVec3 {
         let f = self.finish;
@@ -79,6 +85,7 @@ pub(super) struct LightAt {
 pub(super) struct ShadowQuery<'l> {
     pub light: &'l PreparedLight,
     pub index: u32,
+    /// The dimension block of the shading point (its trace level and diffuse bounces).
     pub level: u32,
     /// The shading point, to which an area light's grid is oriented.
     pub p: DVec3,
@@ -99,7 +106,7 @@ impl Integrator<'_> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
-        let mut colour = layer.ambient_and_emission(self.scene.settings.ambient_light);
+        let mut colour = layer.ambient_and_emission(self.ambient_light);
         for index in 0..self.scene.lights.len() {
             if !LightGroup::lights(self.scene.lights[index].group, s.material.light_group) {
                 continue;
@@ -108,7 +115,10 @@ impl Integrator<'_> {
                 continue;
             };
             colour += layer.diffuse(at.n_dot_l, light);
+            // Radiosity rays see no highlights (measured: phong on a furnace's wall adds
+            // only what the camera sees of it).
             if !self.scene.lights[index].shadowless
+                && s.path.bounces == 0
                 && let Some(h) = layer.highlight(&at, light)
             {
                 colour += h;
@@ -150,7 +160,7 @@ impl Integrator<'_> {
             let query = ShadowQuery {
                 light,
                 index: index as u32,
-                level: s.path.level,
+                level: s.path.block(),
                 p: s.surface.point,
                 origin,
                 inside,
@@ -186,7 +196,7 @@ impl Integrator<'_> {
             Some(area) if light.area_illumination && self.quality >= super::QUALITY_AREA_LIGHTS => {
                 let dim = self
                     .layout
-                    .dimension(s.path.level, Purpose::LightShading(index));
+                    .dimension(s.path.block(), Purpose::LightShading(index));
                 sampler.set_dimension(dim);
                 let frame = area.frame(light.location, light.location - p);
                 let at = area.sample_point(&frame, sampler.get_2d(), self.area_lights, true);
