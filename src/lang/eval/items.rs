@@ -161,7 +161,9 @@ impl Evaluator<'_> {
             }
             "interior" => {
                 self.next()?;
-                Value::Interior(self.interior_body(crate::scene::Interior::default())?)
+                Value::Interior(Box::new(
+                    self.interior_body(crate::scene::Interior::default())?,
+                ))
             }
             "normal" => {
                 self.next()?;

@@ -677,7 +677,7 @@ impl Evaluator<'_> {
                 }
                 Some(n) if matches!(ev.lookup(n), Some(Value::Interior(_))) => {
                     if let Some(Value::Interior(i)) = ev.lookup(n).cloned() {
-                        *interior = i;
+                        *interior = *i;
                     }
                     ev.next()?;
                 }
