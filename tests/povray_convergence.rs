@@ -35,9 +35,20 @@ fn scenes() -> Vec<PathBuf> {
 }
 
 fn load(path: &Path) -> Scene {
+    // Scenes that write data files (scenes/data_file_write.pov) write into a folder of
+    // their own, as `--allow-write DIR` lets them.
+    let stem = path
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let written = std::env::temp_dir().join(format!(
+        "penumbra-convergence-{}-{stem}",
+        std::process::id()
+    ));
+    std::fs::create_dir_all(&written).expect("a temporary folder");
     let options = LoadOptions {
         image_width: WIDTH as u32,
         image_height: HEIGHT as u32,
+        allow_write: Some(written),
         ..LoadOptions::default()
     };
     match load_scene(path, &options) {

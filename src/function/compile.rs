@@ -88,6 +88,7 @@ pub fn compile(expr: &Expr, arity: usize) -> R<Program> {
         arity: arity as u8,
         slots: slots as u8,
         result,
+        arithmetic: e.code.iter().all(Op::is_arithmetic),
         preset: preset.into(),
         code: e.code.into(),
         calls: e.calls.into(),
@@ -280,10 +281,21 @@ impl Emitter {
     }
 }
 
+/// The two factors of a product.
+type Factors<'a> = (&'a Expr, &'a Expr);
+
 /// The factors of a product.
-fn product(e: &Expr) -> Option<(&Expr, &Expr)> {
+fn product(e: &Expr) -> Option<Factors<'_>> {
     match e {
         Expr::Math2(Math2::Mul, a, b) => Some((a, b)),
+        _ => None,
+    }
+}
+
+/// The two products of `a * b + c * d`.
+fn sum_of_products(e: &Expr) -> Option<(Factors<'_>, Factors<'_>)> {
+    match e {
+        Expr::Math2(Math2::Add, a, b) => Some((product(a)?, product(b)?)),
         _ => None,
     }
 }
@@ -291,6 +303,12 @@ fn product(e: &Expr) -> Option<(&Expr, &Expr)> {
 impl Emitter {
     /// `a + b` or `a - b` where one side is a product, or both are, as one operation.
     fn fused(&mut self, f: Math2, a: &Expr, b: &Expr) -> R<u8> {
+        if let (Math2::Add, Some((p, q)), Some((z, w))) = (f, sum_of_products(a), product(b)) {
+            let ((x, y), (u, v)) = (p, q);
+            let (slots, d) = self.operands([x, y, u, v, z, w])?;
+            self.code.push(Op::MulMulMulAdd(slots, d));
+            return Ok(d);
+        }
         if let (Some((x, y)), Some((z, w))) = (product(a), product(b)) {
             let (slots, d) = self.operands([x, y, z, w])?;
             self.code.push(if f == Math2::Add {

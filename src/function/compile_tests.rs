@@ -43,3 +43,41 @@ fn constants_keep_their_slots_when_called_with_x_y_z() {
     let p = compile(&e, 3).expect("compiles");
     assert_eq!(p.at(glam::DVec3::new(1.0, 2.0, 8.0)), 4.0);
 }
+
+#[test]
+fn sums_of_three_products_are_fused_and_round_as_written() {
+    // (x*y + z*w) + u*v, left to right as POV-Ray's parser groups it, in one operation.
+    let e = op(
+        Math2::Add,
+        op(
+            Math2::Add,
+            op(Math2::Mul, arg(0), arg(1)),
+            op(Math2::Mul, arg(2), arg(3)),
+        ),
+        op(Math2::Mul, arg(4), arg(5)),
+    );
+    let p = compile(&e, 6).expect("compiles");
+    assert_eq!(p.code.len(), 1, "{:?}", p.code);
+    assert!(p.arithmetic);
+    let v = [0.1, 0.7, 1.0 / 3.0, 2.0f64.sqrt(), 1e-17, 3.0];
+    let want = (v[0] * v[1] + v[2] * v[3]) + v[4] * v[5];
+    assert_eq!(p.eval(&v).to_bits(), want.to_bits());
+}
+
+#[test]
+fn programs_with_calls_run_in_the_general_loop() {
+    // sqrt(x*x + y*y + z*z) is not pure arithmetic: it must still be computed.
+    let squares = op(
+        Math2::Add,
+        op(
+            Math2::Add,
+            op(Math2::Mul, arg(0), arg(0)),
+            op(Math2::Mul, arg(1), arg(1)),
+        ),
+        op(Math2::Mul, arg(2), arg(2)),
+    );
+    let e = Expr::Math1(Math1::Sqrt, squares);
+    let p = compile(&e, 3).expect("compiles");
+    assert!(!p.arithmetic);
+    assert_eq!(p.at(glam::DVec3::new(2.0, 3.0, 6.0)), 7.0);
+}

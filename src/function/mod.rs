@@ -28,7 +28,8 @@ pub const MAX_SLOTS: usize = 64;
 /// The slot array `Program::run` uses for a program of `slots` slots.
 fn run_size(slots: usize) -> usize {
     match slots {
-        0..=16 => 16,
+        0..=8 => 8,
+        9..=16 => 16,
         17..=32 => 32,
         _ => MAX_SLOTS,
     }
@@ -62,6 +63,8 @@ pub struct Program {
     /// Slots the code uses, and the one holding the value at the end.
     slots: u8,
     result: u8,
+    /// Whether every operation is arithmetic (`Op::is_arithmetic`).
+    arithmetic: bool,
     /// The slots as evaluation starts, before the arguments: the constants in place, the
     /// rest 0, as long as the array `run` uses (one fixed-size copy instead of zeroing and
     /// a loop over the constants).
@@ -152,6 +155,8 @@ enum Op {
     /// a * b + c * d and a * b - c * d (polynomials are sums of such pairs).
     MulMulAdd([u8; 4], u8),
     MulMulSub([u8; 4], u8),
+    /// a * b + c * d + e * f, added left to right (the squared length of a vector).
+    MulMulMulAdd([u8; 6], u8),
     Math1(Math1, u8, u8),
     Math2(Math2, u8, u8, u8),
     /// Selector, the alternatives, result.
@@ -171,15 +176,42 @@ enum Op {
     Prod(u32, u8, u8, u8),
 }
 
+impl Op {
+    /// The operations `run` computes inline.
+    fn is_arithmetic(&self) -> bool {
+        matches!(
+            self,
+            Op::Add(..)
+                | Op::Sub(..)
+                | Op::Mul(..)
+                | Op::Div(..)
+                | Op::Neg(..)
+                | Op::Copy(..)
+                | Op::MulAdd(..)
+                | Op::MulSub(..)
+                | Op::SubMul(..)
+                | Op::MulMulAdd(..)
+                | Op::MulMulSub(..)
+                | Op::MulMulMulAdd(..)
+        )
+    }
+}
+
 impl Program {
     /// The function's value; `args` has exactly `arity` values.
+    #[inline]
     pub fn eval(&self, args: &[f64]) -> f64 {
         // A small array for small functions: copying the largest on every call would cost
         // more than a short function's arithmetic.
-        match self.preset.len() {
-            16 => self.run::<16>(args),
-            32 => self.run::<32>(args),
-            _ => self.run::<MAX_SLOTS>(args),
+        // Pure arithmetic runs in a loop that calls nothing, so it keeps its state in
+        // registers the callee would otherwise make it save (a tenth of the instructions).
+        match (self.preset.len(), self.arithmetic) {
+            (8, true) => self.run::<8, false>(args),
+            (8, false) => self.run::<8, true>(args),
+            (16, true) => self.run::<16, false>(args),
+            (16, false) => self.run::<16, true>(args),
+            (32, _) => self.run::<32, true>(args),
+            _ => self.run::<MAX_SLOTS, true>(args),
         }
     }
 
@@ -192,19 +224,24 @@ impl Program {
         self.eval(&args[..usize::from(self.arity).clamp(3, MAX_PARAMS)])
     }
 
-    fn run<const N: usize>(&self, args: &[f64]) -> f64 {
+    /// `OTHERS`: whether the code may hold operations other than arithmetic.
+    #[inline(never)]
+    fn run<const N: usize, const OTHERS: bool>(&self, args: &[f64]) -> f64 {
         // Slot numbers are below N (the compiler's bound, N a power of two), so masking
         // them changes nothing and lets the compiler drop the bounds checks.
         let at = |i: usize| i & (N - 1);
-        let mut s = [0.0f64; N];
-        s.copy_from_slice(&self.preset[..N]);
+        // The compiler sized the preset for N: the fallback is never taken.
+        let Some(Ok(preset)) = self.preset.get(..N).map(<&[f64; N]>::try_from) else {
+            return f64::NAN;
+        };
+        let mut s = *preset;
         // Indexed copies: for a handful of values they beat both memcpy and iterator
         // adapters.
-        let arity = usize::from(self.arity).min(args.len());
         if let ([x, y, z], 3) = (args, self.arity) {
             // Isosurfaces and function patterns: x, y, z, without a loop.
             (s[0], s[1], s[2]) = (*x, *y, *z);
         } else {
+            let arity = usize::from(self.arity).min(args.len());
             for i in 0..arity {
                 s[at(i)] = args[i];
             }
@@ -229,7 +266,26 @@ impl Program {
                 Op::MulMulSub([a, b, c, e], d) => {
                     s[at(d)] = s[at(a)] * s[at(b)] - s[at(c)] * s[at(e)];
                 }
-                other => self.exec(other, &mut s, args),
+                Op::MulMulMulAdd([a, b, c, e, f, g], d) => {
+                    s[at(d)] = s[at(a)] * s[at(b)] + s[at(c)] * s[at(e)] + s[at(f)] * s[at(g)];
+                }
+                // Every other operation by name, not `_`: a match over all of the enum's
+                // values needs no range check before its jump table.
+                other @ (Op::Math1(..)
+                | Op::Math2(..)
+                | Op::Select3(..)
+                | Op::Select4(..)
+                | Op::Call(..)
+                | Op::Internal(..)
+                | Op::Pattern(..)
+                | Op::Pigment(..)
+                | Op::Spline(..)
+                | Op::Sum(..)
+                | Op::Prod(..)) => {
+                    if OTHERS {
+                        self.exec(other, &mut s, args);
+                    }
+                }
             }
         }
         s[at(self.result)]
@@ -240,20 +296,8 @@ impl Program {
     fn exec<const N: usize>(&self, op: Op, s: &mut [f64; N], args: &[f64]) {
         let g = |s: &[f64; N], i: u8| s[usize::from(i) & (N - 1)];
         let w = |s: &mut [f64; N], i: u8, v: f64| s[usize::from(i) & (N - 1)] = v;
+        debug_assert!(!op.is_arithmetic(), "arithmetic runs in `run`");
         match op {
-            Op::Add(..)
-            | Op::Sub(..)
-            | Op::Mul(..)
-            | Op::Div(..)
-            | Op::Neg(..)
-            | Op::Copy(..)
-            | Op::MulAdd(..)
-            | Op::MulSub(..)
-            | Op::SubMul(..)
-            | Op::MulMulAdd(..)
-            | Op::MulMulSub(..) => {
-                debug_assert!(false, "arithmetic runs in `run`");
-            }
             Op::Math1(f, a, d) => w(s, d, math1(f, g(s, a))),
             Op::Math2(f, a, b, d) => w(s, d, math2(f, g(s, a), g(s, b))),
             Op::Select3([a, b, c], d) => {
@@ -298,6 +342,7 @@ impl Program {
             }
             Op::Sum(i, a, b, d) => w(s, d, self.fold(i, args, (g(s, a), g(s, b)), false)),
             Op::Prod(i, a, b, d) => w(s, d, self.fold(i, args, (g(s, a), g(s, b)), true)),
+            _ => {}
         }
     }
 

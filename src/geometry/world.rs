@@ -16,6 +16,8 @@ pub mod flags {
     /// The material reads the surface's own (u, v) (`uv_mapping`); only then is it
     /// computed, so other scenes pay nothing for it.
     pub const UV: u8 = 16;
+    /// Unseen by radiosity rays (`no_radiosity`).
+    pub const NO_RADIOSITY: u8 = 32;
 }
 
 const NO_TRANSFORM: u32 = u32::MAX;

@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 
 pub use diagnostics::{Diagnostic, Severity, Span};
 pub use eval::budget::{default_memory_budget, parse_memory_size};
+pub use eval::builtins_markdown;
 
 /// Settings from the command line that the scene can see.
 #[derive(Clone, Debug)]

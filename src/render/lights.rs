@@ -20,6 +20,8 @@ pub struct PreparedLight {
     /// Whether scattering media see the light: not with `media_interaction off`, and
     /// never from a shadowless light (measured: a shadowless light lights no media).
     pub lights_media: bool,
+    /// The `light_group` it belongs to (`None`: global).
+    pub group: Option<u32>,
 }
 
 #[derive(Clone, Debug)]
@@ -98,6 +100,7 @@ impl PreparedLight {
             area_illumination: light.area_illumination && light.area.is_some(),
             media_attenuation: light.media_attenuation,
             lights_media: light.media_interaction && !light.shadowless,
+            group: light.group,
         }
     }
 

@@ -1,6 +1,6 @@
 use glam::DVec3;
 
-use super::Transform;
+use super::{Normal, Transform};
 
 /// A perspective camera in its final form: primary rays leave `location` along
 /// `direction + x * right + y * up` with screen coordinates x, y in [-1/2, 1/2].
@@ -16,6 +16,8 @@ pub struct Camera {
     pub projection: Projection,
     /// The projection's horizontal and vertical angles in degrees (defaults resolved).
     pub angles: (f64, f64),
+    /// `normal { }`: tilts every primary ray's direction (src/render/camera.rs).
+    pub normal: Option<Normal>,
 }
 
 /// How screen points become rays (src/render/camera.rs has the formulas, measured with
@@ -32,6 +34,8 @@ pub enum Projection {
     /// `cylinder 1..4`: vertical or horizontal, from a fixed point or a moving one.
     Cylinder(u8),
     Spherical,
+    /// A 180-degree dome view whose lower part is cut off (measured; src/render/camera.rs).
+    Omnimax,
 }
 
 impl Projection {
@@ -89,6 +93,7 @@ pub struct CameraSpec {
     /// orthographic camera takes its size from the distance to `look_at`.
     pub up_or_right_given: bool,
     pub transform: Transform,
+    pub normal: Option<Normal>,
 }
 
 impl Default for CameraSpec {
@@ -108,6 +113,7 @@ impl Default for CameraSpec {
             vertical_angle: None,
             up_or_right_given: false,
             transform: Transform::IDENTITY,
+            normal: None,
         }
     }
 }
@@ -171,6 +177,7 @@ impl CameraSpec {
             focal_point: t.point(self.focal_point),
             projection: self.projection,
             angles: self.projection.angles(self.angle, self.vertical_angle),
+            normal: self.normal.clone(),
         }
     }
 }

@@ -58,6 +58,8 @@ pub struct Light {
     pub media_attenuation: bool,
     /// `media_interaction off`: scattering media do not see the light.
     pub media_interaction: bool,
+    /// The `light_group` the light belongs to (`None`: a global light).
+    pub group: Option<u32>,
 }
 
 impl Light {
@@ -74,6 +76,7 @@ impl Light {
             looks_like: None,
             media_attenuation: false,
             media_interaction: true,
+            group: None,
         }
     }
 }

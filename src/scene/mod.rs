@@ -10,6 +10,7 @@ mod light;
 mod media;
 mod object;
 pub mod path_spline;
+mod radiosity;
 pub mod spline;
 pub mod text;
 mod texture;
@@ -21,8 +22,9 @@ pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{
     BicubicPatch, Blob, BlobComponent, BlobComponentKind, Glyph, HeightField, Isosurface, Lathe,
-    Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
+    LightGroup, Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
 };
+pub use radiosity::{GREY_WEIGHTS, Radiosity, RadiosityCache};
 pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
 };
@@ -93,6 +95,8 @@ pub struct GlobalSettings {
     pub noise_generator: u8,
     /// `irid_wavelength`: the wavelengths (in POV-Ray's units) of r, g and b for `irid`.
     pub irid_wavelength: DVec3,
+    /// `radiosity { }`: diffuse interreflection, when the block is there.
+    pub radiosity: Option<Radiosity>,
 }
 
 impl Default for GlobalSettings {
@@ -106,6 +110,7 @@ impl Default for GlobalSettings {
             // Measured: povray's default interference at normal incidence has phase
             // 4 pi d / lambda with lambda 0.70, 0.52, 0.48.
             irid_wavelength: DVec3::new(0.70, 0.52, 0.48),
+            radiosity: None,
         }
     }
 }

@@ -277,6 +277,27 @@ impl Shape {
     }
 }
 
+/// Membership of a `light_group { }`: the objects in it are lit only by the group's own
+/// lights, and also by the global lights (those in no group) with `global_lights on`.
+/// Shadows ignore groups: every object shadows every light (measured with POV-Ray 3.7).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightGroup {
+    pub id: u32,
+    pub global_lights: bool,
+}
+
+impl LightGroup {
+    /// Whether a light of group `light` (`None`: global) lights an object of group `object`.
+    pub fn lights(light: Option<u32>, object: Option<LightGroup>) -> bool {
+        match (light, object) {
+            (None, None) => true,
+            (None, Some(g)) => g.global_lights,
+            (Some(l), Some(g)) => l == g.id,
+            (Some(_), None) => false,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct ObjectFlags {
     pub no_shadow: bool,
@@ -285,6 +306,10 @@ pub struct ObjectFlags {
     pub hollow: bool,
     pub inverse: bool,
     pub double_illuminate: bool,
+    /// The innermost `light_group` the object is in.
+    pub light_group: Option<LightGroup>,
+    /// Unseen by radiosity rays (they pass through it); still lit by radiosity itself.
+    pub no_radiosity: bool,
 }
 
 /// A shape with its placement and appearance. `transform` maps the shape's own coordinates
@@ -297,6 +322,9 @@ pub struct Object {
     pub shape: Shape,
     pub transform: Transform,
     pub texture: Option<Arc<Texture>>,
+    /// `interior_texture { }`: the texture on the surface's inner side, where a ray meets
+    /// it going along its outward normal (`None`: inherited, else the texture).
+    pub interior_texture: Option<Arc<Texture>>,
     pub interior: Option<Interior>,
     pub flags: ObjectFlags,
     /// `clipped_by { ... }`: only the parts of the surface inside all of these remain.
@@ -312,6 +340,7 @@ impl Object {
             shape,
             transform: Transform::IDENTITY,
             texture: None,
+            interior_texture: None,
             interior: None,
             flags: ObjectFlags::default(),
             clipped_by: Vec::new(),
@@ -326,6 +355,9 @@ impl Object {
     pub fn transform_by(&mut self, t: &Transform) {
         self.transform = self.transform.then(t);
         if let Some(texture) = &mut self.texture {
+            Arc::make_mut(texture).transform_by(t);
+        }
+        if let Some(texture) = &mut self.interior_texture {
             Arc::make_mut(texture).transform_by(t);
         }
         if let Some(interior) = &mut self.interior {

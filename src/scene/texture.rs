@@ -603,6 +603,10 @@ pub struct Finish {
     pub diffuse: f64,
     /// `diffuse a, b`: the share of light reaching the back side (POV-Ray 3.7 default 0).
     pub diffuse_back: f64,
+    /// The diffuse value as written, which scales the light radiosity gathers: POV-Ray
+    /// applies `diffuse albedo`'s brilliance adjustment to the lights only (measured:
+    /// `diffuse albedo 0.6 brilliance 3` lights with 1.2 and gathers with 0.6).
+    pub radiosity_diffuse: f64,
     pub brilliance: f64,
     pub phong: f64,
     pub phong_size: f64,
@@ -639,6 +643,7 @@ impl Default for Finish {
             emission: DVec3::ZERO,
             diffuse: 0.6,
             diffuse_back: 0.0,
+            radiosity_diffuse: 0.6,
             brilliance: 1.0,
             phong: 0.0,
             phong_size: 40.0,

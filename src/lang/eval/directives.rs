@@ -71,6 +71,7 @@ impl Evaluator<'_> {
     /// `#version 3.7;`: a number as written is read raw, so the directive takes effect before
     /// the next token is read.
     fn version_directive(&mut self) -> R<()> {
+        let at = self.raw_peek(0).map(|t| t.span);
         let v = match self.raw_peek(0).map(|t| t.kind) {
             Some(TokenKind::Number(n)) => {
                 self.raw_next();
@@ -79,8 +80,41 @@ impl Evaluator<'_> {
             _ => self.float()?,
         };
         self.eat_declare_semicolon();
+        if v >= 3.8 && self.scene.version < 3.8 {
+            self.version_3_8(at);
+        }
         self.scene.version = v;
         Ok(())
+    }
+
+    /// `#version 3.8` or later. POV-Ray 3.7 refuses such scenes ("Your scene file requires
+    /// POV-Ray version 3.8", a fatal parse error, measured with 3.7.0.10). POV-Ray 3.8
+    /// changes one default: when the directive is the scene's first statement, the default
+    /// ambient is 0 instead of 0.1 (POV-Ray pull request 305). penumbra does that and
+    /// otherwise reads the scene as 3.7, with a warning that POV-Ray 3.7 cannot render it.
+    fn version_3_8(&mut self, at: Option<Span>) {
+        let first = self.scene.objects.is_empty()
+            && self.scene.lights.is_empty()
+            && self.changed_default.is_none();
+        if first {
+            self.default_texture.finish.ambient = glam::DVec3::ZERO;
+            self.changed_default = Some(std::sync::Arc::new(self.default_texture.clone()));
+        }
+        if !self.warned_version_3_8 {
+            self.warned_version_3_8 = true;
+            let span = at.unwrap_or(Span::DETACHED);
+            let ambient = if first {
+                "0 (as POV-Ray 3.8 does)"
+            } else {
+                "unchanged (not the first statement)"
+            };
+            self.warn(
+                span,
+                format!(
+                    "POV-Ray 3.7 refuses `#version 3.8`; penumbra reads the scene as 3.7, default ambient {ambient}"
+                ),
+            );
+        }
     }
 
     /// `#ifdef (Name)` and `#ifndef (Name)`: the name is read raw, as it may be undeclared.

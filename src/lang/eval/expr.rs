@@ -18,6 +18,30 @@ type R<T> = Result<T, Diagnostic>;
 /// Values within this of zero count as false, as in POV-Ray.
 const EPSILON: f64 = 1e-10;
 
+/// The binary operators' precedence, loosest first; all associate to the left.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Level {
+    Or,
+    And,
+    Comparison,
+    Additive,
+    Multiplicative,
+    /// Tighter than any binary operator: only an operand.
+    Operand,
+}
+
+impl Level {
+    fn tighter(self) -> Level {
+        match self {
+            Level::Or => Level::And,
+            Level::And => Level::Comparison,
+            Level::Comparison => Level::Additive,
+            Level::Additive => Level::Multiplicative,
+            Level::Multiplicative | Level::Operand => Level::Operand,
+        }
+    }
+}
+
 impl Evaluator<'_> {
     /// A full expression of any type.
     pub(super) fn expr(&mut self) -> R<(Value, Span)> {
@@ -94,7 +118,7 @@ impl Evaluator<'_> {
     }
 
     fn ternary(&mut self) -> R<(Value, Span)> {
-        let (c, span) = self.or()?;
+        let (c, span) = self.binary(Level::Or)?;
         if self.eat_operator(Punct::Question)? {
             let cond = self.truthy(&c, span)?;
             let (a, sa) = self.expr()?;
@@ -109,111 +133,96 @@ impl Evaluator<'_> {
         Ok((c, span))
     }
 
-    fn or(&mut self) -> R<(Value, Span)> {
-        let (mut a, mut span) = self.and()?;
-        while self.eat_operator(Punct::Pipe)? {
-            let (b, sb) = self.and()?;
-            let r = self.truthy(&a, span)? || self.truthy(&b, sb)?;
-            a = Value::Float(f64::from(u8::from(r)));
-            span = span.join(sb);
-        }
-        Ok((a, span))
+    /// `+` and `-` and tighter: a map entry's value, a count before a vector.
+    pub(super) fn additive(&mut self) -> R<(Value, Span)> {
+        self.binary(Level::Additive)
     }
 
-    fn and(&mut self) -> R<(Value, Span)> {
-        let (mut a, mut span) = self.comparison()?;
-        while self.eat_operator(Punct::Amp)? {
-            let (b, sb) = self.comparison()?;
-            let r = self.truthy(&a, span)? && self.truthy(&b, sb)?;
-            a = Value::Float(f64::from(u8::from(r)));
-            span = span.join(sb);
-        }
-        Ok((a, span))
-    }
-
-    fn comparison(&mut self) -> R<(Value, Span)> {
-        let (mut a, mut span) = self.additive()?;
+    /// The binary operators from `level` up, by precedence climbing: one look at the next
+    /// token per operand, where a function per level would look once per level.
+    fn binary(&mut self, level: Level) -> R<(Value, Span)> {
+        let (mut a, mut span) = self.unary()?;
         loop {
             let tok = self.peek_operator()?;
             let TokenKind::Punct(p) = tok.kind else {
                 break;
             };
-            if !matches!(
-                p,
-                Punct::Lt | Punct::Le | Punct::Eq | Punct::Ne | Punct::Ge | Punct::Gt
-            ) || (p == Punct::Gt && self.in_vector)
-                // `box { <a> <b> }`: a `<` after a vector starts the next vector, and so
-                // does one outside parentheses (measured: POV-Ray reads `poly { 4 <1, ...> }`
-                // as order 4, and refuses `str(A < 0.3, 0, 0)`).
-                || (p == Punct::Lt && (!matches!(a, Value::Float(_)) || self.grouping == 0))
-            {
+            let Some(op_level) = self.level_of(p, &a) else {
+                break;
+            };
+            if op_level < level {
                 break;
             }
             self.next()?;
-            let (b, sb) = self.additive()?;
-            // Strings compare in byte order, as POV-Ray 3.7 does.
-            let (x, y) = match (&a, &b) {
-                (Value::Str(sa), Value::Str(sb)) => match sa.as_bytes().cmp(sb.as_bytes()) {
-                    std::cmp::Ordering::Less => (0.0, 1.0),
-                    std::cmp::Ordering::Equal => (0.0, 0.0),
-                    std::cmp::Ordering::Greater => (1.0, 0.0),
-                },
-                _ => (self.to_float(&a, span)?, self.to_float(&b, sb)?),
-            };
-            // Equality has POV-Ray's tolerance, and so do `<=` and `>=` (measured: 0.5 +
-            // 1e-12 <= 0.5 holds, 0.5 + 2e-10 <= 0.5 does not; `<` and `>` are strict), so
-            // `#while (X <= 0.5)` stepping X by 0.01 from -0.5 runs 101 times.
-            let equal = (x - y).abs() <= EPSILON;
-            let r = match p {
-                Punct::Lt => x < y,
-                Punct::Le => x < y || equal,
-                Punct::Eq => equal,
-                Punct::Ne => !equal,
-                Punct::Ge => x > y || equal,
-                _ => x > y,
-            };
-            a = Value::Float(f64::from(u8::from(r)));
+            let (b, sb) = self.binary(op_level.tighter())?;
+            a = self.apply(p, (&a, span), (&b, sb), tok.span)?;
             span = span.join(sb);
         }
         Ok((a, span))
     }
 
-    pub(super) fn additive(&mut self) -> R<(Value, Span)> {
-        let (mut a, mut span) = self.multiplicative()?;
-        loop {
-            let tok = self.peek_operator()?;
-            let op = if tok.is_punct(Punct::Plus) {
-                BinOp::Add
-            } else if tok.is_punct(Punct::Minus) {
-                BinOp::Sub
-            } else {
-                break;
-            };
-            self.next()?;
-            let (b, sb) = self.multiplicative()?;
-            a = arith(op, &a, &b).map_err(|m| self.err(tok.span, m))?;
-            span = span.join(sb);
-        }
-        Ok((a, span))
+    /// The level of the operator `p` after the operand `a`, or None where `p` ends the
+    /// expression.
+    fn level_of(&self, p: Punct, a: &Value) -> Option<Level> {
+        Some(match p {
+            Punct::Pipe => Level::Or,
+            Punct::Amp => Level::And,
+            Punct::Plus | Punct::Minus => Level::Additive,
+            Punct::Star | Punct::Slash => Level::Multiplicative,
+            // `box { <a> <b> }`: a `<` after a vector starts the next vector, and so does
+            // one outside parentheses (measured: POV-Ray reads `poly { 4 <1, ...> }` as
+            // order 4, and refuses `str(A < 0.3, 0, 0)`); inside a vector `>` closes it.
+            Punct::Gt if self.in_vector => return None,
+            Punct::Lt if !matches!(a, Value::Float(_)) || self.grouping == 0 => return None,
+            Punct::Lt | Punct::Le | Punct::Eq | Punct::Ne | Punct::Ge | Punct::Gt => {
+                Level::Comparison
+            }
+            _ => return None,
+        })
     }
 
-    fn multiplicative(&mut self) -> R<(Value, Span)> {
-        let (mut a, mut span) = self.unary()?;
-        loop {
-            let tok = self.peek_operator()?;
-            let op = if tok.is_punct(Punct::Star) {
-                BinOp::Mul
-            } else if tok.is_punct(Punct::Slash) {
-                BinOp::Div
-            } else {
-                break;
-            };
-            self.next()?;
-            let (b, sb) = self.unary()?;
-            a = arith(op, &a, &b).map_err(|m| self.err(tok.span, m))?;
-            span = span.join(sb);
-        }
-        Ok((a, span))
+    fn apply(
+        &self,
+        p: Punct,
+        (a, sa): (&Value, Span),
+        (b, sb): (&Value, Span),
+        at: Span,
+    ) -> R<Value> {
+        let truth = |t: bool| Value::Float(f64::from(u8::from(t)));
+        let op = match p {
+            Punct::Pipe => return Ok(truth(self.truthy(a, sa)? || self.truthy(b, sb)?)),
+            Punct::Amp => return Ok(truth(self.truthy(a, sa)? && self.truthy(b, sb)?)),
+            Punct::Plus => BinOp::Add,
+            Punct::Minus => BinOp::Sub,
+            Punct::Star => BinOp::Mul,
+            Punct::Slash => BinOp::Div,
+            _ => return self.compare(p, (a, sa), (b, sb)).map(truth),
+        };
+        arith(op, a, b).map_err(|m| self.err(at, m))
+    }
+
+    fn compare(&self, p: Punct, (a, sa): (&Value, Span), (b, sb): (&Value, Span)) -> R<bool> {
+        // Strings compare in byte order, as POV-Ray 3.7 does.
+        let (x, y) = match (a, b) {
+            (Value::Str(a), Value::Str(b)) => match a.as_bytes().cmp(b.as_bytes()) {
+                std::cmp::Ordering::Less => (0.0, 1.0),
+                std::cmp::Ordering::Equal => (0.0, 0.0),
+                std::cmp::Ordering::Greater => (1.0, 0.0),
+            },
+            _ => (self.to_float(a, sa)?, self.to_float(b, sb)?),
+        };
+        // Equality has POV-Ray's tolerance, and so do `<=` and `>=` (measured: 0.5 +
+        // 1e-12 <= 0.5 holds, 0.5 + 2e-10 <= 0.5 does not; `<` and `>` are strict), so
+        // `#while (X <= 0.5)` stepping X by 0.01 from -0.5 runs 101 times.
+        let equal = (x - y).abs() <= EPSILON;
+        Ok(match p {
+            Punct::Lt => x < y,
+            Punct::Le => x < y || equal,
+            Punct::Eq => equal,
+            Punct::Ne => !equal,
+            Punct::Ge => x > y || equal,
+            _ => x > y,
+        })
     }
 
     fn unary(&mut self) -> R<(Value, Span)> {

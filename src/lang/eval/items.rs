@@ -12,7 +12,7 @@ use crate::scene::{AreaLight, CameraSpec, Light, LightKind, Projection};
 type R<T> = Result<T, Diagnostic>;
 
 /// Features POV-Ray has at the top level that penumbra does not model yet.
-const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "photons", "radiosity"];
+const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "photons"];
 
 impl Evaluator<'_> {
     pub(super) fn item(&mut self) -> R<()> {
@@ -161,7 +161,9 @@ impl Evaluator<'_> {
             }
             "interior" => {
                 self.next()?;
-                Value::Interior(self.interior_body(crate::scene::Interior::default())?)
+                Value::Interior(Box::new(
+                    self.interior_body(crate::scene::Interior::default())?,
+                ))
             }
             "normal" => {
                 self.next()?;
@@ -298,20 +300,12 @@ impl Evaluator<'_> {
                 let Some(word) = tok.ident() else {
                     return Err(ev.stray_in_block(tok, "the camera"));
                 };
+                if let Some(projection) = projection_keyword(word) {
+                    ev.next()?;
+                    spec.projection = projection;
+                    return Ok(());
+                }
                 match word {
-                    "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle"
-                    | "panoramic" | "spherical" => {
-                        let word = word.to_string();
-                        ev.next()?;
-                        spec.projection = match word.as_str() {
-                            "perspective" => Projection::Perspective,
-                            "orthographic" => Projection::Orthographic,
-                            "fisheye" => Projection::Fisheye,
-                            "ultra_wide_angle" => Projection::UltraWideAngle,
-                            "panoramic" => Projection::Panoramic,
-                            _ => Projection::Spherical,
-                        };
-                    }
                     "cylinder" => {
                         let tok = ev.next()?;
                         let kind = ev.float()?;
@@ -372,7 +366,11 @@ impl Evaluator<'_> {
                         ev.next()?;
                         ev.float()?;
                     }
-                    "omnimax" | "mesh_camera" | "normal" => {
+                    "normal" => {
+                        ev.next()?;
+                        spec.normal = ev.normal_body(spec.normal.take())?;
+                    }
+                    "mesh_camera" => {
                         let word = word.to_string();
                         ev.unsupported_or_skip(tok, &word)?;
                     }
@@ -621,6 +619,10 @@ impl Evaluator<'_> {
                     ev.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
                 }
                 "adc_bailout" => ev.scene.settings.adc_bailout = ev.float()?,
+                "radiosity" => {
+                    let start = ev.scene.settings.radiosity.unwrap_or_default();
+                    ev.scene.settings.radiosity = Some(ev.radiosity_block(start)?);
+                }
                 "ambient_light" => {
                     let (c, _) = ev.colour()?;
                     ev.scene.settings.ambient_light = DVec3::new(c[0], c[1], c[2]);
@@ -794,4 +796,18 @@ pub fn starts_statement(word: &str) -> bool {
         || matches!(word, "sky_sphere" | "fog" | "rainbow" | "media")
         || super::objects::is_object_keyword(word)
         || super::objects::is_known_unsupported_shape(word)
+}
+
+/// The projection a camera keyword names (`cylinder` takes a number and is read apart).
+fn projection_keyword(word: &str) -> Option<Projection> {
+    Some(match word {
+        "perspective" => Projection::Perspective,
+        "orthographic" => Projection::Orthographic,
+        "fisheye" => Projection::Fisheye,
+        "ultra_wide_angle" => Projection::UltraWideAngle,
+        "panoramic" => Projection::Panoramic,
+        "omnimax" => Projection::Omnimax,
+        "spherical" => Projection::Spherical,
+        _ => return None,
+    })
 }

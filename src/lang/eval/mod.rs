@@ -18,6 +18,7 @@ mod directives;
 mod expr;
 mod fog;
 mod functions;
+pub use functions::builtins_markdown;
 mod height_field;
 mod isosurface;
 mod items;
@@ -28,6 +29,7 @@ mod objects;
 mod path_splines;
 mod placement;
 mod poly;
+mod radiosity;
 mod stream;
 mod sweeps;
 mod text;
@@ -103,6 +105,11 @@ pub struct Evaluator<'w> {
     fonts: std::collections::HashMap<PathBuf, crate::scene::text::Font>,
     /// Objects built for `trace`, `inside` and the extents.
     placements: placement::Placements,
+    /// How many `light_group`s have been read: the next one's id.
+    light_groups: u32,
+    /// Whether the `#version 3.8` warning was given (include files switch versions back and
+    /// forth; once is enough).
+    warned_version_3_8: bool,
 }
 
 impl<'w> Evaluator<'w> {
@@ -141,6 +148,8 @@ impl<'w> Evaluator<'w> {
             allow_write: None,
             fonts: std::collections::HashMap::new(),
             placements: placement::Placements::default(),
+            light_groups: 0,
+            warned_version_3_8: false,
         }
     }
 

@@ -78,6 +78,7 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("cubic", |ev, _| kept(ev.cubic_items()?)),
     ("polynomial", |ev, _| kept(ev.polynomial_items()?)),
     ("julia_fractal", |ev, _| kept(ev.julia_items()?)),
+    ("light_group", |ev, kw| kept(ev.light_group_items(kw)?)),
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
@@ -91,7 +92,7 @@ pub fn is_object_keyword(word: &str) -> bool {
 
 /// Shapes and CSG kinds POV-Ray has that the scene model does not (yet).
 pub fn is_known_unsupported_shape(word: &str) -> bool {
-    matches!(word, "parametric" | "ovus" | "sphere_sweep" | "light_group")
+    matches!(word, "parametric" | "ovus" | "sphere_sweep")
 }
 
 impl Evaluator<'_> {
@@ -327,6 +328,25 @@ impl Evaluator<'_> {
         }
     }
 
+    /// `light_group { objects... lights... }`: a union whose objects only its own lights
+    /// shade (and the global lights, with `global_lights on`, read as a modifier). Nested
+    /// groups keep their own: the innermost group an object is in decides.
+    fn light_group_items(&mut self, kw: &Token) -> R<ObjectValue> {
+        let mut group = self.csg_children(&the(kw), Shape::Union)?;
+        let id = self.light_groups;
+        self.light_groups += 1;
+        for light in &mut group.lights {
+            light.group.get_or_insert(id);
+        }
+        if let Some(o) = &mut group.object {
+            o.flags.light_group = Some(crate::scene::LightGroup {
+                id,
+                global_lights: false,
+            });
+        }
+        Ok(group)
+    }
+
     /// Children of a CSG block; lights inside it are kept beside the shape so later
     /// transforms move them too. Children without a texture keep `None` (they inherit).
     fn csg_children(&mut self, what: &str, make: fn(Vec<Object>) -> Shape) -> R<ObjectValue> {
@@ -485,6 +505,13 @@ impl Evaluator<'_> {
             "no_image" => flag(self, &mut object.flags.no_image)?,
             "no_reflection" => flag(self, &mut object.flags.no_reflection)?,
             "double_illuminate" => flag(self, &mut object.flags.double_illuminate)?,
+            "global_lights" => {
+                let Some(group) = &mut object.flags.light_group else {
+                    return Err(self.err(tok.span, "`global_lights` only applies to a light_group"));
+                };
+                self.next()?;
+                group.global_lights = self.optional_bool()?;
+            }
             "hollow" => {
                 self.next()?;
                 object.flags.hollow = self.optional_bool()?;
@@ -510,7 +537,14 @@ impl Evaluator<'_> {
                 self.next()?;
                 self.optional_bool()?;
             }
-            "photons" | "radiosity" | "interior_texture" | "no_radiosity" => {
+            "interior_texture" => {
+                self.next()?;
+                let t = self.texture_body(self.default_texture.clone())?;
+                object.interior_texture = Some(self.share_texture(t));
+            }
+            "no_radiosity" => flag(self, &mut object.flags.no_radiosity)?,
+            "radiosity" => self.object_radiosity()?,
+            "photons" => {
                 self.unsupported_or_skip(tok, word)?;
             }
             _ => return Ok(false),
@@ -643,7 +677,7 @@ impl Evaluator<'_> {
                 }
                 Some(n) if matches!(ev.lookup(n), Some(Value::Interior(_))) => {
                     if let Some(Value::Interior(i)) = ev.lookup(n).cloned() {
-                        *interior = i;
+                        *interior = *i;
                     }
                     ev.next()?;
                 }

@@ -230,7 +230,25 @@ impl Evaluator<'_> {
     }
 
     /// The next token, after running any directives and macro calls in front of it.
+    #[inline]
     pub(super) fn peek(&mut self) -> Result<Token, Diagnostic> {
+        // Most tokens are plain: answer those here, inline in the caller, and leave
+        // directives, macro calls and frame ends to `peek_slow`.
+        if let Some(frame) = self.frames.last()
+            && let Some(tok) = frame.tokens.get(frame.pos)
+            && frame.pos < frame.end
+        {
+            match tok.kind {
+                TokenKind::Directive(_) => {}
+                TokenKind::Ident(_) if self.special_names => {}
+                _ => return Ok(*tok),
+            }
+        }
+        self.peek_slow()
+    }
+
+    #[inline(never)]
+    fn peek_slow(&mut self) -> Result<Token, Diagnostic> {
         loop {
             let Some(frame) = self.frames.last() else {
                 return Ok(Token {

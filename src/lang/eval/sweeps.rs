@@ -31,6 +31,7 @@ const AFTER_POINTS: &[&str] = &[
     "no_image",
     "no_reflection",
     "double_illuminate",
+    "no_radiosity",
     "clipped_by",
     "bounded_by",
 ];

@@ -1203,6 +1203,7 @@ impl Evaluator<'_> {
                 "emission" => f.emission = self.colour_or_float()?,
                 "diffuse" => {
                     self.albedo_or_value(&mut f.diffuse, &mut albedo.diffuse)?;
+                    f.radiosity_diffuse = albedo.diffuse.unwrap_or(f.diffuse);
                     if self.eat(Punct::Comma)? {
                         f.diffuse_back = self.float()?;
                     }

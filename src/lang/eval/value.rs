@@ -92,7 +92,7 @@ pub enum Value {
     /// A declared `normal { }` (None: one that perturbs nothing).
     Normal(Box<Option<crate::scene::Normal>>),
     Texture(Box<Texture>),
-    Interior(Interior),
+    Interior(Box<Interior>),
     /// A `material`: the texture and interior it sets, if any.
     Material(Box<(Option<Texture>, Option<Interior>)>),
     Transform(Box<Transform>),

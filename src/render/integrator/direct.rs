@@ -14,7 +14,7 @@ use crate::render::lights::LightSamples;
 use crate::render::lights::{AreaLightMode, PreparedArea, PreparedLight};
 use crate::render::prepared::{Material, PreparedScene};
 use crate::render::sampler::{PixelSampler, permute};
-use crate::scene::{Colour, Finish};
+use crate::scene::{Colour, Finish, LightGroup};
 
 use super::interiors::InteriorStack;
 use super::optics::{caustic_factor, fade};
@@ -45,6 +45,12 @@ impl ShadedLayer<'_> {
         let mut colour = c * self.finish.ambient * ambient_light * self.att;
         colour += c * self.finish.emission * self.att;
         colour
+    }
+
+    /// What the layer reflects of the light radiosity gathers: pigment, the diffuse value
+    /// as written, opacity.
+    pub(super) fn radiosity_albedo(&self) -> DVec3 {
+        self.pigment.rgb * self.finish.radiosity_diffuse * self.att
     }
 
     /// The diffuse light from a light of colour `light` (already shadowed) at N.L `n_dot_l`.
@@ -81,6 +87,7 @@ pub(super) struct LightAt {
 pub(super) struct ShadowQuery<'l> {
     pub light: &'l PreparedLight,
     pub index: u32,
+    /// The dimension block of the shading point (its trace level and diffuse bounces).
     pub level: u32,
     /// The shading point, to which an area light's grid is oriented.
     pub p: DVec3,
@@ -101,8 +108,11 @@ impl Integrator<'_> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
-        let mut colour = layer.ambient_and_emission(self.scene.settings.ambient_light);
+        let mut colour = layer.ambient_and_emission(self.ambient_light);
         for index in 0..self.scene.lights.len() {
+            if !LightGroup::lights(self.scene.lights[index].group, s.material.light_group) {
+                continue;
+            }
             let Some((at, mut light)) = self.light_arriving(s, index, sampler, counts) else {
                 continue;
             };
@@ -112,7 +122,10 @@ impl Integrator<'_> {
                 light *= irid_factor(irid, wavelength, at.n_dot_l, n_dot_v, s.surface.point);
             }
             colour += layer.diffuse(at.n_dot_l, light);
+            // Radiosity rays see no highlights (measured: phong on a furnace's wall adds
+            // only what the camera sees of it).
             if !self.scene.lights[index].shadowless
+                && s.path.bounces == 0
                 && let Some(h) = layer.highlight(&at, light)
             {
                 colour += h;
@@ -154,7 +167,7 @@ impl Integrator<'_> {
             let query = ShadowQuery {
                 light,
                 index: index as u32,
-                level: s.path.level,
+                level: s.path.block(),
                 p: s.surface.point,
                 origin,
                 inside,
@@ -190,7 +203,7 @@ impl Integrator<'_> {
             Some(area) if light.area_illumination && self.quality >= super::QUALITY_AREA_LIGHTS => {
                 let dim = self
                     .layout
-                    .dimension(s.path.level, Purpose::LightShading(index));
+                    .dimension(s.path.block(), Purpose::LightShading(index));
                 sampler.set_dimension(dim);
                 let frame = area.frame(light.location, light.location - p);
                 let at = area.sample_point(&frame, sampler.get_2d(), self.area_lights, true);
@@ -348,7 +361,11 @@ impl Integrator<'_> {
         let mut filter = DVec3::ONE;
         scene.world.shadow_hits(ray, t_max, |hit| {
             let index = scene.world.hit_material(hit);
-            let material = &scene.materials[index as usize];
+            let mut material = &scene.materials[index as usize];
+            if material.inner.is_some() {
+                let back = scene.world.surface(ray, hit).normal.dot(ray.direction) > 0.0;
+                material = scene.side_material(index, back);
+            }
             if !material.transmits {
                 filter = DVec3::ZERO;
                 return false;

@@ -174,7 +174,7 @@ impl Integrator<'_> {
         if s.path.wavelength.is_some() || !interior.disperses() || b.refracted.is_none() {
             return (*b, s.path.wavelength);
         }
-        sampler.set_dimension(self.layout.dimension(s.path.level, Purpose::Dispersion));
+        sampler.set_dimension(self.layout.dimension(s.path.block(), Purpose::Dispersion));
         let n = interior.dispersion_samples.max(1);
         let i = ((sampler.get_1d() * f64::from(n)) as u32).min(n - 1);
         let t = wavelength(i, n);
@@ -237,6 +237,8 @@ mod tests {
         let material = Material {
             texture: Default::default(),
             double_illuminate: false,
+            light_group: None,
+            inner: None,
             transmits: true,
             interior: crate::scene::Interior {
                 ior: 1.5,

@@ -18,6 +18,7 @@ mod dispersion;
 mod interiors;
 mod media;
 mod optics;
+mod radiosity;
 
 pub use optics::{fresnel, refract};
 
@@ -26,7 +27,7 @@ use glam::DVec3;
 use crate::appearance::finish::{metallic_tint, reflectivity};
 use crate::appearance::{blended_layers, perturbed_normal, sky_colour, texture_layers};
 use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
-use crate::scene::{Colour, Finish};
+use crate::scene::{Colour, Finish, Radiosity};
 
 use super::RenderOptions;
 use super::dimensions::{DimensionLayout, Purpose};
@@ -86,6 +87,22 @@ struct Path {
     interiors: InteriorStack,
     /// The wavelength parameter the ray took at a dispersing refraction (`dispersion.rs`).
     wavelength: Option<f64>,
+    /// Radiosity rays (diffuse bounces) on the path so far: they count no trace level, as
+    /// in POV-Ray, but the decisions after each read a block of dimensions of their own.
+    bounces: u32,
+}
+
+/// Dimension blocks per diffuse bounce: more than the deepest trace level (256), so that
+/// (level, bounces) pairs never share a block.
+const BLOCKS_PER_BOUNCE: u32 = 257;
+
+impl Path {
+    /// The block of sampler dimensions the decisions at this path's next hit read: the
+    /// trace level's, moved along by the diffuse bounces taken (a path without radiosity
+    /// reads exactly the trace level's block).
+    fn block(&self) -> u32 {
+        self.level + self.bounces * BLOCKS_PER_BOUNCE
+    }
 }
 
 /// Everything shading needs to know about one hit, built once per hit in `trace`.
@@ -96,6 +113,8 @@ struct Shading<'s> {
     d: DVec3,
     /// The shading normal, perturbed by the texture's `normal`, turned to face the ray.
     n: DVec3,
+    /// The same before the texture's `normal`: radiosity gathers around it by default.
+    facing: DVec3,
     material: &'s Material,
     /// Whether the ray leaves the material's interior here (see [`InteriorStack`]).
     leaving: bool,
@@ -168,6 +187,12 @@ pub struct Integrator<'a> {
     /// The interiors the camera is in: camera rays start there (no fog inside a solid
     /// object, and the index of refraction of a transparent one).
     camera_interiors: InteriorStack,
+    /// The scene's radiosity, where this quality computes it.
+    radiosity: Option<Radiosity>,
+    /// What finishes' `ambient` is lit by: the scene's ambient_light, or nothing where
+    /// radiosity replaces it (scenes of `#version` 3.7 on; measured: ambient 0.3 changes
+    /// nothing with radiosity on, and adds ambient * ambient_light to each bounce in 3.6).
+    ambient_light: DVec3,
 }
 
 /// `+Q` levels: from these on, POV-Ray shows diffuse light, shadows, area lights, and
@@ -178,10 +203,23 @@ pub(super) const QUALITY_AREA_LIGHTS: u32 = 5;
 pub(super) const QUALITY_RAYS: u32 = 8;
 /// From +Q9 on, POV-Ray computes media (measured: an emitting slab shows at 9, not 8).
 pub(super) const QUALITY_MEDIA: u32 = 9;
+/// Radiosity too starts at +Q9 (measured: a diffuse furnace gathers nothing at +Q8).
+pub(super) const QUALITY_RADIOSITY: u32 = 9;
 
 impl<'a> Integrator<'a> {
     pub fn new(scene: &'a PreparedScene, options: &RenderOptions) -> Integrator<'a> {
+        let radiosity = scene
+            .settings
+            .radiosity
+            .filter(|_| options.quality >= QUALITY_RADIOSITY);
+        let ambient_light = if radiosity.is_some() && !scene.legacy {
+            DVec3::ZERO
+        } else {
+            scene.settings.ambient_light
+        };
         Integrator {
+            radiosity,
+            ambient_light,
             scene,
             layout: scene.dimension_layout(),
             roulette: options.roulette,
@@ -207,6 +245,7 @@ impl<'a> Integrator<'a> {
             skip: flags::NO_IMAGE,
             interiors: self.camera_interiors,
             wavelength: None,
+            bounces: 0,
         };
         let l = self.trace(ray, path, sampler, counts);
         match self.scene.output_gamma {
@@ -229,7 +268,9 @@ impl<'a> Integrator<'a> {
             Some(hit) => self.shade(&self.shading(ray, hit, path), sampler, counts),
             None => self.sky(ray.direction),
         };
-        let media = !self.scene.media.is_empty() && self.quality >= QUALITY_MEDIA;
+        let media = !self.scene.media.is_empty()
+            && self.quality >= QUALITY_MEDIA
+            && (path.bounces == 0 || self.radiosity.is_some_and(|r| r.media));
         if (self.scene.fogs.is_empty() && !media) || !path.interiors.in_atmosphere() {
             return seen;
         }
@@ -240,7 +281,7 @@ impl<'a> Integrator<'a> {
             length: hit.map_or(f64::INFINITY, |h| h.t * scale),
         };
         let seen = if media {
-            self.media_effect(&segment, &path.interiors, path.level, sampler, counts)
+            self.media_effect(&segment, &path.interiors, path.block(), sampler, counts)
                 .apply(seen)
         } else {
             seen
@@ -250,11 +291,11 @@ impl<'a> Integrator<'a> {
 
     fn shading(&self, ray: &Ray, hit: &Hit, path: Path) -> Shading<'a> {
         let surface = self.scene.world.surface(ray, hit);
-        let material = &self.scene.materials[surface.material as usize];
         let d = ray.direction.normalize();
         // The ray meets the surface from behind, and whether it leaves the interior (the
         // two differ where parts of one object touch or overlap).
         let back = surface.normal.dot(d) > 0.0;
+        let material = self.scene.side_material(surface.material, back);
         let leaving = back || path.interiors.contains(material.interior_id);
         let fade_through = if leaving && material.interior.fade_distance > 0.0 {
             fade(material, hit.t * ray.direction.length())
@@ -271,6 +312,7 @@ impl<'a> Integrator<'a> {
         };
         Shading {
             n: perturbed_normal(&material.texture, &surface, facing),
+            facing,
             shadow_origin: offset_point(surface.point, surface.normal, -d),
             surface,
             d,
@@ -297,6 +339,8 @@ impl<'a> Integrator<'a> {
         // Layers composite top first: each lets through what its own opacity does not cover.
         let mut through = DVec3::ONE;
         let mut top: Option<(Colour, &Finish)> = None;
+        // What the layers together reflect diffusely, for radiosity.
+        let mut diffuse = DVec3::ZERO;
         if self.quality < QUALITY_LIGHTING {
             // POV-Ray's quick colours: the pigment, fully lit.
             return layers.iter().next().map_or(DVec3::ZERO, |l| l.colour.rgb);
@@ -309,11 +353,18 @@ impl<'a> Integrator<'a> {
                 att: c.opacity(self.scene.legacy),
             };
             colour += through * self.surface_light(s, &shaded, sampler, counts);
+            diffuse += through * shaded.radiosity_albedo();
             top.get_or_insert((c, layer.finish));
             through *= c.rgb * c.filter + DVec3::splat(c.transmit);
             if through == DVec3::ZERO {
                 break;
             }
+        }
+        if let Some(radiosity) = &self.radiosity
+            && s.path.bounces < radiosity.recursion_limit
+            && diffuse != DVec3::ZERO
+        {
+            colour += self.gathered(s, radiosity, diffuse, sampler, counts);
         }
         let Some((pigment, finish)) = top else {
             return colour;
@@ -346,7 +397,7 @@ impl<'a> Integrator<'a> {
         if reflect_weight <= 0.0 && transmit_weight <= 0.0 {
             return colour;
         }
-        let choice = self.choose(s.path.level, reflect_weight, transmit_weight, sampler);
+        let choice = self.choose(s.path.block(), reflect_weight, transmit_weight, sampler);
         if let Some(p) = choice.reflect
             && let Some(c) = self.reflected(s, &b, top.finish, p, sampler, counts)
         {
@@ -361,10 +412,10 @@ impl<'a> Integrator<'a> {
     }
 
     /// Both branches, or under `--splitting one` one of them at random in proportion to
-    /// its weight.
+    /// its weight (`block`: the hit's dimension block).
     fn choose(
         &self,
-        level: u32,
+        block: u32,
         reflect: f64,
         transmit: f64,
         sampler: &mut PixelSampler,
@@ -375,7 +426,7 @@ impl<'a> Integrator<'a> {
         };
         if self.splitting == Splitting::One && choice.reflect.is_some() && choice.transmit.is_some()
         {
-            sampler.set_dimension(self.layout.dimension(level, Purpose::Splitting));
+            sampler.set_dimension(self.layout.dimension(block, Purpose::Splitting));
             let u = sampler.get_1d();
             let pr = reflect / (reflect + transmit);
             if u < pr {
@@ -465,7 +516,7 @@ impl<'a> Integrator<'a> {
         counts: &mut RayCounts,
     ) -> Option<(DVec3, f64)> {
         let q = self.survival(branch.weight, branch.linear);
-        if q <= 0.0 || !self.survives(q, s.path.level, branch.roulette, sampler) {
+        if q <= 0.0 || !self.survives(q, s.path.block(), branch.roulette, sampler) {
             return None;
         }
         let origin = offset_point(s.surface.point, s.surface.normal, branch.dir);
@@ -476,6 +527,7 @@ impl<'a> Integrator<'a> {
             skip: branch.skip,
             interiors: branch.interiors,
             wavelength: branch.wavelength,
+            bounces: s.path.bounces,
         };
         Some((
             self.trace(&Ray::new(origin, branch.dir), next, sampler, counts),
@@ -507,11 +559,11 @@ impl<'a> Integrator<'a> {
         }
     }
 
-    fn survives(&self, q: f64, level: u32, purpose: Purpose, sampler: &mut PixelSampler) -> bool {
+    fn survives(&self, q: f64, block: u32, purpose: Purpose, sampler: &mut PixelSampler) -> bool {
         if q >= 1.0 {
             return true;
         }
-        sampler.set_dimension(self.layout.dimension(level, purpose));
+        sampler.set_dimension(self.layout.dimension(block, purpose));
         sampler.get_1d() < q
     }
 }
