@@ -206,7 +206,7 @@ impl Program {
         // Pure arithmetic runs in a loop that calls nothing, so it keeps its state in
         // registers the callee would otherwise make it save (a tenth of the instructions).
         match (self.preset.len(), self.arithmetic) {
-            (8, true) => self.run::<8, false>(args),
+            (8, true) => self.run_inline::<8, false>(args),
             (8, false) => self.run::<8, true>(args),
             (16, true) => self.run::<16, false>(args),
             (16, false) => self.run::<16, true>(args),
@@ -227,6 +227,13 @@ impl Program {
     /// `OTHERS`: whether the code may hold operations other than arithmetic.
     #[inline(never)]
     fn run<const N: usize, const OTHERS: bool>(&self, args: &[f64]) -> f64 {
+        self.run_inline::<N, OTHERS>(args)
+    }
+
+    /// [`Program::run`] where the caller wants it inline: the small arithmetic programs
+    /// isosurfaces are made of, whose call would cost as much as their arithmetic.
+    #[inline(always)]
+    fn run_inline<const N: usize, const OTHERS: bool>(&self, args: &[f64]) -> f64 {
         // Slot numbers are below N (the compiler's bound, N a power of two), so masking
         // them changes nothing and lets the compiler drop the bounds checks.
         let at = |i: usize| i & (N - 1);
