@@ -18,6 +18,8 @@ pub mod flags {
     pub const UV: u8 = 16;
     /// Unseen by radiosity rays (`no_radiosity`).
     pub const NO_RADIOSITY: u8 = 32;
+    /// Photons go through it unchanged (`photons { pass_through }`).
+    pub const PHOTON_PASS: u8 = 64;
 }
 
 const NO_TRANSFORM: u32 = u32::MAX;
@@ -132,6 +134,8 @@ pub struct World {
     csg: Vec<CsgNode>,
     bvh: Bvh,
     unbounded: Vec<u32>,
+    /// The bounds of the objects photons are shot at (`photons { target }`).
+    photon_targets: Vec<Aabb>,
 }
 
 /// Collects primitives and CSG nodes, then builds the BVH over the top-level items.
@@ -142,6 +146,7 @@ pub struct WorldBuilder {
     pub tables: ShapeTables,
     csg: Vec<CsgNode>,
     top: Vec<Item>,
+    targets: Vec<Item>,
 }
 
 impl WorldBuilder {
@@ -183,6 +188,11 @@ impl WorldBuilder {
         self.top.push(item);
     }
 
+    /// Marks an item as a target photons are shot at.
+    pub fn add_photon_target(&mut self, item: Item) {
+        self.targets.push(item);
+    }
+
     pub fn build(self) -> World {
         let mut world = World {
             primitives: self.primitives,
@@ -191,7 +201,14 @@ impl WorldBuilder {
             csg: self.csg,
             bvh: Bvh::default(),
             unbounded: Vec::new(),
+            photon_targets: Vec::new(),
         };
+        world.photon_targets = self
+            .targets
+            .iter()
+            .filter_map(|item| world.item_bounds(item.0))
+            .filter(|b| b.is_finite() && !b.is_empty())
+            .collect();
         let mut bounded = Vec::new();
         let mut bounds = Vec::new();
         for item in &self.top {
@@ -284,6 +301,11 @@ impl World {
         for node in &mut self.csg {
             node.children.iter_mut().for_each(remap);
         }
+    }
+
+    /// The bounds of the photon targets (infinite ones left out: nothing to aim at).
+    pub fn photon_targets(&self) -> &[Aabb] {
+        &self.photon_targets
     }
 
     pub fn primitive_count(&self) -> usize {

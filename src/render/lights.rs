@@ -22,6 +22,7 @@ pub struct PreparedLight {
     pub lights_media: bool,
     /// The `light_group` it belongs to (`None`: global).
     pub group: Option<u32>,
+    pub photons: crate::scene::LightPhotons,
 }
 
 #[derive(Clone, Debug)]
@@ -101,6 +102,16 @@ impl PreparedLight {
             media_attenuation: light.media_attenuation,
             lights_media: light.media_interaction && !light.shadowless,
             group: light.group,
+            photons: light.photons,
+        }
+    }
+
+    /// `fade_distance` and `fade_power`'s factor at `distance` from the light.
+    pub fn fade(&self, distance: f64) -> f64 {
+        if self.fade_power > 0.0 && self.fade_distance > 0.0 {
+            2.0 / (1.0 + (distance / self.fade_distance).powf(self.fade_power))
+        } else {
+            1.0
         }
     }
 
@@ -131,10 +142,7 @@ impl PreparedLight {
                 (to / d, d, d)
             }
         };
-        let mut factor = 1.0;
-        if self.fade_power > 0.0 && self.fade_distance > 0.0 {
-            factor *= 2.0 / (1.0 + (fade_distance / self.fade_distance).powf(self.fade_power));
-        }
+        let mut factor = self.fade(fade_distance);
         match self.kind {
             LightKind::Spot {
                 point_at,

@@ -8,6 +8,7 @@ pub mod fog;
 pub mod integrator;
 pub mod lights;
 pub mod media;
+pub mod photons;
 pub mod prepared;
 pub mod sampler;
 pub mod target;
@@ -432,6 +433,20 @@ struct PixelPlan {
 }
 
 impl SamplePlan<'_> {
+    /// The sample indices some pixel of the plan takes (a superset).
+    fn index_span(&self) -> Range<u32> {
+        match self {
+            SamplePlan::Uniform { range, .. } => range.clone(),
+            SamplePlan::PerPixel { counts, .. } => 0..counts.iter().copied().max().unwrap_or(0),
+        }
+    }
+
+    fn seed(&self) -> u64 {
+        match self {
+            SamplePlan::Uniform { seed, .. } | SamplePlan::PerPixel { seed, .. } => *seed,
+        }
+    }
+
     fn pixel(&self, i: usize) -> PixelPlan {
         match self {
             SamplePlan::Uniform {
@@ -530,12 +545,83 @@ fn sample_camera_ray(
     camera_ray(&scene.camera, sx, sy, lens)
 }
 
+/// Photons shot per pass (per sample index) in a scene with photon targets.
+const PHOTONS_PER_PASS: u32 = 50_000;
+/// Sample indices whose photon passes are held in memory at once.
+const PHOTON_BATCH: u32 = 16;
+/// The photon stream whose first pass sets the first gather radius: the same for every
+/// seed, so that every seed's render estimates the same thing.
+const RADIUS_SEED: u64 = 0;
+
 /// One pass over the image: the film and the rays traced. Cancelled, each pixel stops at a
-/// sample boundary and its count says how many of its samples it took.
+/// sample boundary and its count says how many of its samples it took. In a scene with
+/// photons, the sample indices go in batches, each with its photon passes.
 fn render_pass(
     scene: &PreparedScene,
     options: &RenderOptions,
     plan: &SamplePlan,
+    progress: &dyn Progress,
+) -> (Film, RayCounts) {
+    let shooter = Integrator::new(scene, options);
+    let first_radius = scene
+        .settings
+        .photons
+        .filter(|_| !scene.world.photon_targets().is_empty())
+        .and_then(|_| {
+            photons::first_radius(&shooter.shoot_photons(0, RADIUS_SEED, PHOTONS_PER_PASS))
+        });
+    let Some(first_radius) = first_radius else {
+        return render_indices(scene, options, plan, None, progress);
+    };
+    let span = plan.index_span();
+    let batches: Vec<Range<u32>> = span
+        .clone()
+        .step_by(PHOTON_BATCH as usize)
+        .map(|a| a..(a + PHOTON_BATCH).min(span.end))
+        .collect();
+    let mut film = Film::new(options.width, options.height);
+    let mut rays = RayCounts::default();
+    for (i, batch) in batches.iter().enumerate() {
+        let maps = photons::PhotonMaps {
+            first: batch.start,
+            maps: batch
+                .clone()
+                .into_par_iter()
+                .map(|pass| {
+                    let shot = shooter.shoot_photons(pass, plan.seed(), PHOTONS_PER_PASS);
+                    photons::PhotonMap::new(shot, photons::pass_radius(first_radius, pass))
+                })
+                .collect(),
+        };
+        let photons = PhotonBatch {
+            maps: &maps,
+            indices: batch.clone(),
+            number: (i as u64, batches.len() as u64),
+        };
+        let (part, part_rays) = render_indices(scene, options, plan, Some(&photons), progress);
+        film.merge(&part);
+        rays.add(&part_rays);
+        if progress.cancelled() {
+            break;
+        }
+    }
+    (film, rays)
+}
+
+/// The sample indices one batch renders, with their photon passes.
+struct PhotonBatch<'m> {
+    maps: &'m photons::PhotonMaps,
+    indices: Range<u32>,
+    /// Which batch of how many, for progress.
+    number: (u64, u64),
+}
+
+/// [`render_pass`] over the samples of one photon batch (all of them without photons).
+fn render_indices(
+    scene: &PreparedScene,
+    options: &RenderOptions,
+    plan: &SamplePlan,
+    photons: Option<&PhotonBatch>,
     progress: &dyn Progress,
 ) -> (Film, RayCounts) {
     let (w, h) = (options.width, options.height);
@@ -556,14 +642,21 @@ fn render_pass(
             })
         })
         .collect();
-    let total = tiles.len() as u64;
-    let done = AtomicU64::new(0);
-    let integrator = Integrator::new(scene, options);
+    let (batch, batches) = photons.map_or((0, 1), |p| p.number);
+    let total = tiles.len() as u64 * batches;
+    let done = AtomicU64::new(tiles.len() as u64 * batch);
     let one_ray_options = RenderOptions {
         light_samples: LightSamples::Fixed(1),
         ..options.clone()
     };
-    let one_ray_integrator = Integrator::new(scene, &one_ray_options);
+    let (mut integrator, mut one_ray_integrator) = (
+        Integrator::new(scene, options),
+        Integrator::new(scene, &one_ray_options),
+    );
+    if let Some(p) = photons {
+        integrator = integrator.with_photons(p.maps);
+        one_ray_integrator = one_ray_integrator.with_photons(p.maps);
+    }
     let layout = *integrator.layout();
     let new_sampler = |spp: u32| {
         if options.stratified {
@@ -585,6 +678,10 @@ fn render_pass(
                     seed,
                     one_ray,
                 } = plan.pixel(y * w + x);
+                let range = match photons {
+                    Some(p) => range.start.max(p.indices.start)..range.end.min(p.indices.end),
+                    None => range,
+                };
                 if !inside(x, y) {
                     sums.push(PixelSum::default());
                     continue;

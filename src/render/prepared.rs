@@ -53,6 +53,8 @@ pub struct Material {
     /// With an `interior_texture`: the material (this one with that texture) of the inner
     /// side, seen by rays that meet the surface going along its outward normal.
     pub inner: Option<u32>,
+    /// How photons treat it (`photons { }`; the defaults where it has none).
+    pub photons: crate::scene::ObjectPhotons,
 }
 
 #[derive(Clone, Debug)]
@@ -109,6 +111,7 @@ impl PreparedScene {
             materials: Vec::new(),
             interior_ids: std::collections::HashMap::new(),
             media: MediaTable::new(&scene.media),
+            photons: scene.settings.photons.is_some(),
         };
         let default_texture = Texture::default();
         let default_interior = Interior::default();
@@ -155,6 +158,8 @@ struct Builder {
     /// Interior ids by owner (see Looks::interior_owner).
     interior_ids: std::collections::HashMap<usize, u32>,
     media: MediaTable,
+    /// Whether the scene computes caustics with photons (global_settings photons).
+    photons: bool,
 }
 
 fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
@@ -167,6 +172,7 @@ fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
         double_illuminate: f.double_illuminate || inherited.double_illuminate,
         light_group: f.light_group.or(inherited.light_group),
         no_radiosity: f.no_radiosity || inherited.no_radiosity,
+        photons: f.photons.or(inherited.photons),
     }
 }
 
@@ -295,6 +301,9 @@ impl Builder {
         };
         if top {
             self.world.add_top(item);
+            if self.photons && f.photons.is_some_and(|p| p.target) {
+                self.world.add_photon_target(item);
+            }
         }
         Some(item)
     }
@@ -454,10 +463,16 @@ impl Builder {
             }
         };
         self.media.add_interior(interior_id, &interior.media);
+        let photons = looks.flags.photons.unwrap_or_default();
+        // POV-Ray's shadow rays stop at a target that refracts photons: the photons bring
+        // the light that passes through it (measured: the shadow under a clear glass
+        // target is black but for its caustic).
+        let photons_refract = self.photons && photons.target && photons.refraction;
         self.materials.push(Material {
             texture: looks.texture.clone(),
             double_illuminate: looks.flags.double_illuminate,
-            transmits: may_transmit(looks.texture),
+            transmits: may_transmit(looks.texture) && !photons_refract,
+            photons,
             // The media go to the scene's media table, once per interior.
             interior: with_finish_caustics(
                 Interior {
@@ -729,6 +744,9 @@ fn mask(f: ObjectFlags) -> u8 {
     }
     if f.no_radiosity {
         m |= flags::NO_RADIOSITY;
+    }
+    if f.photons.is_some_and(|p| p.pass_through) {
+        m |= flags::PHOTON_PASS;
     }
     if f.inverse {
         m |= flags::INVERSE;

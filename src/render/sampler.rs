@@ -139,14 +139,14 @@ impl FreeStream {
     }
 }
 
-fn unit_f64(rng: &mut Pcg32) -> f64 {
+pub(crate) fn unit_f64(rng: &mut Pcg32) -> f64 {
     let hi = rng.next_u32() as u64;
     let lo = rng.next_u32() as u64;
     ((hi << 21) ^ lo) as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
 /// A 64-bit finaliser (SplitMix64's) to turn structured keys into well-mixed seeds.
-fn mix(mut z: u64) -> u64 {
+pub(crate) fn mix(mut z: u64) -> u64 {
     z = z.wrapping_add(0x9e37_79b9_7f4a_7c15);
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);

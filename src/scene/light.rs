@@ -60,6 +60,8 @@ pub struct Light {
     pub media_interaction: bool,
     /// The `light_group` the light belongs to (`None`: a global light).
     pub group: Option<u32>,
+    /// `photons { }`: whether its photons reflect and refract.
+    pub photons: super::LightPhotons,
 }
 
 impl Light {
@@ -77,6 +79,7 @@ impl Light {
             media_attenuation: false,
             media_interaction: true,
             group: None,
+            photons: super::LightPhotons::default(),
         }
     }
 }

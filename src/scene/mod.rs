@@ -10,6 +10,7 @@ mod light;
 mod media;
 mod object;
 pub mod path_spline;
+mod photons;
 mod radiosity;
 pub mod spline;
 pub mod text;
@@ -24,6 +25,7 @@ pub use object::{
     BicubicPatch, Blob, BlobComponent, BlobComponentKind, Glyph, HeightField, Isosurface, Lathe,
     LightGroup, Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
 };
+pub use photons::{LightPhotons, ObjectPhotons, PhotonSettings};
 pub use radiosity::{GREY_WEIGHTS, Radiosity, RadiosityCache};
 pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
@@ -97,6 +99,8 @@ pub struct GlobalSettings {
     pub irid_wavelength: DVec3,
     /// `radiosity { }`: diffuse interreflection, when the block is there.
     pub radiosity: Option<Radiosity>,
+    /// `photons { }`: caustics, when the block is there.
+    pub photons: Option<PhotonSettings>,
 }
 
 impl Default for GlobalSettings {
@@ -111,6 +115,7 @@ impl Default for GlobalSettings {
             // 4 pi d / lambda with lambda 0.70, 0.52, 0.48.
             irid_wavelength: DVec3::new(0.70, 0.52, 0.48),
             radiosity: None,
+            photons: None,
         }
     }
 }

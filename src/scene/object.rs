@@ -310,6 +310,8 @@ pub struct ObjectFlags {
     pub light_group: Option<LightGroup>,
     /// Unseen by radiosity rays (they pass through it); still lit by radiosity itself.
     pub no_radiosity: bool,
+    /// The innermost `photons { }` block.
+    pub photons: Option<super::ObjectPhotons>,
 }
 
 /// A shape with its placement and appearance. `transform` maps the shape's own coordinates

@@ -560,7 +560,8 @@ impl Evaluator<'_> {
                     light.looks_like = Some(Box::new(object));
                 }
             }
-            "projected_through" | "photons" => {
+            "photons" => light.photons = self.light_photons(light.photons)?,
+            "projected_through" => {
                 self.unsupported_or_skip(tok, word)?;
             }
             _ => return Ok(false),
@@ -619,6 +620,10 @@ impl Evaluator<'_> {
                     ev.scene.settings.max_trace_level = f.clamp(1.0, 256.0) as u32;
                 }
                 "adc_bailout" => ev.scene.settings.adc_bailout = ev.float()?,
+                "photons" => {
+                    let start = ev.scene.settings.photons.unwrap_or_default();
+                    ev.scene.settings.photons = Some(ev.photon_settings(start)?);
+                }
                 "radiosity" => {
                     let start = ev.scene.settings.radiosity.unwrap_or_default();
                     ev.scene.settings.radiosity = Some(ev.radiosity_block(start)?);

@@ -27,6 +27,7 @@ mod media;
 mod meshes;
 mod objects;
 mod path_splines;
+mod photons;
 mod placement;
 mod poly;
 mod radiosity;

@@ -545,7 +545,8 @@ impl Evaluator<'_> {
             "no_radiosity" => flag(self, &mut object.flags.no_radiosity)?,
             "radiosity" => self.object_radiosity()?,
             "photons" => {
-                self.unsupported_or_skip(tok, word)?;
+                let start = object.flags.photons.unwrap_or_default();
+                object.flags.photons = Some(self.object_photons(start)?);
             }
             _ => return Ok(false),
         }

@@ -53,6 +53,12 @@ impl ShadedLayer<'_> {
         self.pigment.rgb * self.finish.radiosity_diffuse * self.att
     }
 
+    /// The light photons bring (irradiance `e`), shown as POV-Ray shows it: times the
+    /// diffuse colour, as a light shining straight at the surface would be.
+    pub(super) fn caustic(&self, e: DVec3) -> DVec3 {
+        self.pigment.rgb * e * (self.finish.diffuse * self.att)
+    }
+
     /// The diffuse light from a light of colour `light` (already shadowed) at N.L `n_dot_l`.
     pub(super) fn diffuse(&self, n_dot_l: f64, light: DVec3) -> DVec3 {
         let f = self.finish;

@@ -18,6 +18,7 @@ mod dispersion;
 mod interiors;
 mod media;
 mod optics;
+mod photons;
 mod radiosity;
 
 pub use optics::{fresnel, refract};
@@ -25,11 +26,13 @@ pub use optics::{fresnel, refract};
 use glam::DVec3;
 
 use crate::appearance::finish::{metallic_tint, reflectivity};
+use crate::appearance::texture::Layers;
 use crate::appearance::{blended_layers, perturbed_normal, sky_colour, texture_layers};
 use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
 use crate::scene::{Colour, Finish, Radiosity};
 
 use super::RenderOptions;
+use super::photons::PhotonMaps;
 use super::dimensions::{DimensionLayout, Purpose};
 use super::lights::{AreaLightMode, LightSamples};
 use super::prepared::{Material, PreparedScene};
@@ -193,6 +196,8 @@ pub struct Integrator<'a> {
     /// radiosity replaces it (scenes of `#version` 3.7 on; measured: ambient 0.3 changes
     /// nothing with radiosity on, and adds ambient * ambient_light to each bounce in 3.6).
     ambient_light: DVec3,
+    /// The photon passes the samples being rendered gather from (`None`: no caustics).
+    photons: Option<&'a PhotonMaps>,
 }
 
 /// `+Q` levels: from these on, POV-Ray shows diffuse light, shadows, area lights, and
@@ -228,6 +233,15 @@ impl<'a> Integrator<'a> {
             light_samples: options.light_samples,
             quality: options.quality,
             camera_interiors: camera_interiors(scene),
+            photons: None,
+        }
+    }
+
+    /// The same integrator, gathering caustics from these photon passes.
+    pub fn with_photons(self, photons: &'a PhotonMaps) -> Integrator<'a> {
+        Integrator {
+            photons: Some(photons),
+            ..self
         }
     }
 
@@ -325,16 +339,8 @@ impl<'a> Integrator<'a> {
 
     /// The surface's own colour, layer by layer, then what it reflects and transmits.
     fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
-        let layers = match &s.surface.blend {
-            Some(b) => blended_layers(
-                self.scene
-                    .world
-                    .blend_weights(b)
-                    .map(|(m, w)| (&self.scene.materials[m as usize].texture, w)),
-                &s.surface,
-            ),
-            None => texture_layers(&s.material.texture, &s.surface),
-        };
+        let layers = self.layers(s);
+        let caustic = self.caustic(s, sampler.index());
         let mut colour = DVec3::ZERO;
         // Layers composite top first: each lets through what its own opacity does not cover.
         let mut through = DVec3::ONE;
@@ -353,6 +359,9 @@ impl<'a> Integrator<'a> {
                 att: c.opacity(self.scene.legacy),
             };
             colour += through * self.surface_light(s, &shaded, sampler, counts);
+            if caustic != DVec3::ZERO {
+                colour += through * shaded.caustic(caustic);
+            }
             diffuse += through * shaded.radiosity_albedo();
             top.get_or_insert((c, layer.finish));
             through *= c.rgb * c.filter + DVec3::splat(c.transmit);
@@ -378,6 +387,20 @@ impl<'a> Integrator<'a> {
             through,
         };
         self.secondary(s, &top, colour, sampler, counts)
+    }
+
+    /// The texture's layers at the hit (a blend's mixed top layer where it has one).
+    fn layers<'s>(&'s self, s: &Shading<'s>) -> Layers<'s> {
+        match &s.surface.blend {
+            Some(b) => blended_layers(
+                self.scene
+                    .world
+                    .blend_weights(b)
+                    .map(|(m, w)| (&self.scene.materials[m as usize].texture, w)),
+                &s.surface,
+            ),
+            None => texture_layers(&s.material.texture, &s.surface),
+        }
     }
 
     /// Adds the reflected and transmitted light to the surface's own `colour`.

@@ -1,0 +1,23 @@
+// Photons: a glass sphere (photons refract) focuses a point light into a caustic on the
+// floor, inside the sphere's shadow, which POV-Ray makes opaque for a refracting target;
+// a tilted mirror (photons reflect) throws a second, softer patch of the light back onto
+// the floor. POV-Ray's photon map is noisy and blurred by its gather radius; penumbra's
+// passes shrink their radius, so the two agree only as POV-Ray's count grows (the
+// reference uses 5 million photons).
+#version 3.7;
+global_settings { assumed_gamma 1.0 max_trace_level 8 photons { count 5000000 } }
+camera { location <0, 5, -6> look_at <0, 0.5, 0.3> right x*4/3 angle 45 }
+light_source { <-0.2, 7, 3.5> color rgb 1 }
+plane { y, 0 pigment { rgb 0.8 } finish { ambient 0 diffuse 0.8 } }
+sphere { <-0.6, 1, 0>, 1
+  pigment { rgbf <1, 0.95, 0.8, 1> }
+  finish { ambient 0 diffuse 0 }
+  interior { ior 1.25 }
+  photons { target refraction on reflection off }
+}
+box { <-1, 0, -0.05>, <1, 1.6, 0.05>
+  pigment { rgb 0 }
+  finish { ambient 0 diffuse 0 reflection 0.9 }
+  rotate y*-35 rotate x*10 translate <2.1, 0.2, 1.2>
+  photons { target reflection on }
+}

@@ -1,0 +1,257 @@
+//! Shooting one pass of photons, and gathering a pass at a shaded point (the method and
+//! POV-Ray's conventions are in `crate::render::photons`).
+//!
+//! A photon leaves a light towards a `photons { target }` object, inside the cone (or, from
+//! a parallel light, the beam) that the target's bounding sphere subtends; at each surface
+//! it meets it goes on along the reflected or the refracted branch, chosen in proportion to
+//! the branch's weight (the same weights camera rays use, so the photons see the same
+//! glass), and after its first bounce it is stored wherever it lands.
+
+use glam::DVec3;
+use rand_pcg::Pcg32;
+
+use crate::geometry::{Aabb, Ray, flags, offset_point};
+use crate::render::lights::PreparedLight;
+use crate::render::photons::Photon;
+use crate::render::sampler::{mix, unit_f64};
+use crate::scene::LightKind;
+
+use super::interiors::InteriorStack;
+use super::{Branches, Integrator, Path, Shading, Top, branches};
+
+/// Keeps the photons' random streams apart from every other stream of the seed.
+const PHOTON_SALT: u64 = 0x5048_4f54_4f4e_0001;
+
+/// Where one (light, target) pair's photons start and how much light each carries.
+struct Beam {
+    /// The cone's apex (point and spot lights) or the beam's centre (parallel lights).
+    origin: DVec3,
+    axis: DVec3,
+    /// Point lights: the cosine of the cone's half angle; parallel: unused.
+    cos_max: f64,
+    /// Parallel lights: the beam's radius.
+    radius: f64,
+    /// Point and spot lights spread their light over distance; POV-Ray's lights do not
+    /// fall off, so such a photon's power grows with the square of its path.
+    spreads: bool,
+}
+
+impl Beam {
+    fn new(light: &PreparedLight, target: &Aabb) -> Option<Beam> {
+        let centre = (target.min + target.max) * 0.5;
+        let r = (target.max - target.min).length() * 0.5;
+        match light.kind {
+            LightKind::Point | LightKind::Spot { .. } => {
+                let to = centre - light.location;
+                let d = to.length();
+                if !(d > 0.0) {
+                    return None;
+                }
+                let cos_max = if d <= r {
+                    -1.0
+                } else {
+                    (1.0 - (r / d).powi(2)).sqrt()
+                };
+                Some(Beam {
+                    origin: light.location,
+                    axis: to / d,
+                    cos_max,
+                    radius: 0.0,
+                    spreads: true,
+                })
+            }
+            LightKind::Parallel { point_at } | LightKind::Cylinder { point_at, .. } => {
+                let axis = (point_at - light.location).normalize_or(-DVec3::Y);
+                // From the plane through the light, across its direction.
+                let back = (light.location - centre).dot(axis);
+                Some(Beam {
+                    origin: centre + axis * back,
+                    axis,
+                    cos_max: 1.0,
+                    radius: r,
+                    spreads: false,
+                })
+            }
+        }
+    }
+
+    /// The k-th of n photons: its ray and the light it carries (before its path's length).
+    fn photon(&self, light: &PreparedLight, (k, n): (u32, u32), rng: &mut Pcg32) -> (Ray, DVec3) {
+        // Stratified over the cone's (or disc's) first coordinate, uniform over the turn.
+        let u = (f64::from(k) + unit_f64(rng)) / f64::from(n);
+        let phi = std::f64::consts::TAU * unit_f64(rng);
+        let (a, b) = self.axis.any_orthonormal_pair();
+        let across = a * phi.cos() + b * phi.sin();
+        if self.spreads {
+            let cos = 1.0 - u * (1.0 - self.cos_max);
+            let sin = (1.0 - cos * cos).max(0.0).sqrt();
+            let dir = self.axis * cos + across * sin;
+            let solid_angle = std::f64::consts::TAU * (1.0 - self.cos_max);
+            let cone = light
+                .incidence(light.location + dir)
+                .map_or(0.0, |i| i.factor / light.fade(1.0));
+            let power = light.colour * (solid_angle / f64::from(n) * cone);
+            (Ray::new(self.origin, dir), power)
+        } else {
+            let start = self.origin + across * (self.radius * u.sqrt());
+            let area = std::f64::consts::PI * self.radius * self.radius;
+            let beam = light
+                .incidence(start + self.axis)
+                .map_or(0.0, |i| i.factor / light.fade(1.0));
+            let power = light.colour * (area / f64::from(n) * beam);
+            (Ray::new(start, self.axis), power)
+        }
+    }
+}
+
+impl Integrator<'_> {
+    /// One pass's photons, about `count` shot in all, shared equally among the (light,
+    /// target) pairs; a pure function of (seed, pass).
+    pub fn shoot_photons(&self, pass: u32, seed: u64, count: u32) -> Vec<Photon> {
+        let targets = self.scene.world.photon_targets();
+        let lights: Vec<usize> = (0..self.scene.lights.len())
+            .filter(|&i| {
+                let p = self.scene.lights[i].photons;
+                !(p.no_reflection && p.no_refraction)
+            })
+            .collect();
+        let pairs = (lights.len() * targets.len()) as u32;
+        let mut out = Vec::new();
+        if pairs == 0 {
+            return out;
+        }
+        let n = (count / pairs).max(1);
+        for &l in &lights {
+            let light = &self.scene.lights[l];
+            for (t, target) in targets.iter().enumerate() {
+                let Some(beam) = Beam::new(light, target) else {
+                    continue;
+                };
+                let key = mix(seed ^ PHOTON_SALT ^ (u64::from(pass) << 32) ^ ((l as u64) << 16))
+                    ^ mix(t as u64);
+                let mut rng = Pcg32::new(key, mix(key) | 1);
+                for k in 0..n {
+                    let (ray, power) = beam.photon(light, (k, n), &mut rng);
+                    if power != DVec3::ZERO {
+                        self.trace_photon(ray, power, (light, &beam), &mut rng, &mut out);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Follows one photon from its light, storing it where it lands after a bounce.
+    fn trace_photon(
+        &self,
+        mut ray: Ray,
+        mut power: DVec3,
+        (light, beam): (&PreparedLight, &Beam),
+        rng: &mut Pcg32,
+        out: &mut Vec<Photon>,
+    ) {
+        let settings = self.scene.settings.photons.unwrap_or_default();
+        let max_level = settings
+            .max_trace_level
+            .unwrap_or(self.scene.settings.max_trace_level);
+        let mut path = Path {
+            level: 1,
+            weight: 1.0,
+            skip: flags::PHOTON_PASS,
+            interiors: InteriorStack::OUTSIDE,
+            wavelength: None,
+            bounces: 0,
+        };
+        let mut length = 0.0;
+        while let Some(hit) = self.scene.world.intersect(&ray, f64::INFINITY, path.skip) {
+            length += hit.t * ray.direction.length();
+            let s = self.shading(&ray, &hit, path);
+            if path.level > 1 && !s.material.photons.no_collect {
+                let spread = if beam.spreads { length * length } else { 1.0 };
+                let scale = spread * light.fade(length);
+                out.push(Photon::new(s.surface.point, power * scale, s.d));
+            }
+            if path.level >= max_level {
+                return;
+            }
+            let Some((dir, weight, interiors, straight)) = self.photon_bounce(&s, light, rng)
+            else {
+                return;
+            };
+            power *= weight;
+            path.interiors = interiors;
+            if !straight {
+                path.level += 1;
+            }
+            ray = Ray::new(offset_point(s.surface.point, s.surface.normal, dir), dir);
+        }
+    }
+
+    /// The branch a photon takes at a surface: its direction, the factor on its power
+    /// (the branch's weight over the chance it was chosen), the interiors it is in after,
+    /// and whether it went on straight (an index of refraction of 1: no bounce counted).
+    fn photon_bounce(
+        &self,
+        s: &Shading,
+        light: &PreparedLight,
+        rng: &mut Pcg32,
+    ) -> Option<(DVec3, DVec3, InteriorStack, bool)> {
+        let top = self.top_layer(s)?;
+        let b: Branches = branches(s, &top);
+        let object = s.material.photons;
+        let reflect = if !object.reflection || light.photons.no_reflection {
+            DVec3::ZERO
+        } else {
+            b.reflect
+        };
+        let transmit = if !object.refraction || light.photons.no_refraction {
+            DVec3::ZERO
+        } else {
+            b.transmit
+        };
+        let (wr, wt) = (reflect.abs().max_element(), transmit.abs().max_element());
+        if wr + wt <= 0.0 {
+            return None;
+        }
+        let pr = wr / (wr + wt);
+        if unit_f64(rng) < pr {
+            return Some((b.mirror, reflect / pr, s.path.interiors, false));
+        }
+        let chosen = 1.0 - pr;
+        Some(match b.refracted {
+            Some(_) if b.straight => (s.d, transmit / chosen, b.beyond, true),
+            Some(dir) => (dir, transmit / chosen, b.beyond, false),
+            None => (b.mirror, transmit / chosen, s.path.interiors, false),
+        })
+    }
+
+    /// What this sample's photon pass brings to the shaded point (irradiance).
+    pub(super) fn caustic(&self, s: &Shading, index: u32) -> DVec3 {
+        let Some(map) = self.photons.and_then(|m| m.pass(index)) else {
+            return DVec3::ZERO;
+        };
+        map.irradiance(s.surface.point, s.facing)
+    }
+
+    /// The top layer's pigment and finish and what the layers let through, as `shade`
+    /// finds them.
+    fn top_layer<'s>(&'s self, s: &Shading<'s>) -> Option<Top<'s>> {
+        let layers = self.layers(s);
+        let mut through = DVec3::ONE;
+        let mut top = None;
+        for layer in layers.iter() {
+            let c = layer.colour;
+            top.get_or_insert((c, layer.finish));
+            through *= c.rgb * c.filter + DVec3::splat(c.transmit);
+            if through == DVec3::ZERO {
+                break;
+            }
+        }
+        let (pigment, finish) = top?;
+        Some(Top {
+            pigment,
+            finish,
+            through,
+        })
+    }
+}

@@ -1,0 +1,277 @@
+//! Caustics by probabilistic progressive photon mapping (Knaus and Zwicker, "Progressive
+//! Photon Mapping: A Probabilistic Approach", 2011).
+//!
+//! POV-Ray shoots one photon map before it renders and gathers from it everywhere, so its
+//! caustic is blurred by the gather radius and noisy by the photon count, and stays so
+//! however many samples a pixel takes. penumbra shoots a new, independent set of photons
+//! for every sample index (the pass) and gathers pass `j` over a radius `r_j` that shrinks
+//! as `r_{j+1}^2 = r_j^2 (j + alpha) / (j + 1)`: each pass's estimate is biased by its
+//! radius, but the mean over a pixel's samples converges to the caustic itself, its bias
+//! and its noise both falling as the samples grow. Every pass is a pure function of
+//! (seed, pass index), so the image is the same for any thread count and any split of the
+//! samples.
+//!
+//! POV-Ray's convention, measured (docs/differences.md, "Photons"): a photon carries the
+//! light's colour times the solid angle it stands for, times the square of the length of
+//! its path (POV-Ray's lights do not fall off with distance, and neither do its caustics:
+//! a plane mirror's caustic equals a second light at the mirror image, to 0.5%), and a
+//! surface shows the photons' irradiance times its diffuse colour.
+
+use glam::DVec3;
+
+/// Knaus and Zwicker's alpha: the share of photons kept from one pass's radius to the
+/// next. 2/3 balances the fall of the bias and of the noise.
+const ALPHA: f64 = 2.0 / 3.0;
+
+/// The first pass's radius holds about this many photons where they are densest.
+const FIRST_NEIGHBOURS: usize = 8;
+
+/// Photons whose first-radius neighbourhood is measured (spread evenly over the pass).
+const RADIUS_PROBES: usize = 200;
+
+/// One photon where it landed, in single precision (the map is large; the gather's
+/// precision needs no more).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Photon {
+    pub position: [f32; 3],
+    /// The light it brings, already scaled by its path length (see the module doc).
+    pub power: [f32; 3],
+    /// Its direction of travel as it landed.
+    pub direction: [f32; 3],
+}
+
+impl Photon {
+    pub fn new(position: DVec3, power: DVec3, direction: DVec3) -> Photon {
+        Photon {
+            position: position.as_vec3().to_array(),
+            power: power.as_vec3().to_array(),
+            direction: direction.as_vec3().to_array(),
+        }
+    }
+
+    fn position(&self) -> DVec3 {
+        glam::Vec3::from_array(self.position).as_dvec3()
+    }
+}
+
+/// One pass's photons, hashed into a grid of cells twice the gather radius wide, so that a
+/// gather looks at the 2 x 2 x 2 cells its sphere can touch.
+#[derive(Clone, Debug, Default)]
+pub struct PhotonMap {
+    photons: Vec<Photon>,
+    /// `starts[b]..starts[b + 1]`: the photons of hash bucket b.
+    starts: Vec<u32>,
+    radius: f64,
+    cell: f64,
+}
+
+impl PhotonMap {
+    pub fn new(photons: Vec<Photon>, radius: f64) -> PhotonMap {
+        let cell = 2.0 * radius;
+        let buckets = (photons.len() * 2).next_power_of_two().max(1);
+        let key = |p: &Photon| bucket(cell_of(p.position(), cell), buckets);
+        let mut starts = vec![0u32; buckets + 1];
+        for p in &photons {
+            starts[key(p) + 1] += 1;
+        }
+        for b in 0..buckets {
+            starts[b + 1] += starts[b];
+        }
+        let mut next = starts.clone();
+        let mut sorted = vec![photons.first().copied().unwrap_or(EMPTY); photons.len()];
+        for p in &photons {
+            let b = key(p);
+            sorted[next[b] as usize] = *p;
+            next[b] += 1;
+        }
+        PhotonMap {
+            photons: sorted,
+            starts,
+            radius,
+            cell,
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.photons.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.photons.is_empty()
+    }
+
+    /// The irradiance the photons bring to `p` on a surface facing `n` (photons that
+    /// arrive from behind it are not counted): their power within the radius over the
+    /// disc's area.
+    pub fn irradiance(&self, p: DVec3, n: DVec3) -> DVec3 {
+        if self.photons.is_empty() {
+            return DVec3::ZERO;
+        }
+        let buckets = self.starts.len() - 1;
+        let base = cell_of(p, self.cell);
+        // The 2 x 2 x 2 block of cells around p: towards the nearer side on each axis.
+        let frac = p / self.cell - base.as_dvec3();
+        let step = |f: f64| if f < 0.5 { -1 } else { 1 };
+        let steps = glam::I64Vec3::new(step(frac.x), step(frac.y), step(frac.z));
+        let r2 = (self.radius * self.radius) as f32;
+        let (pf, nf) = (p.as_vec3(), n.as_vec3());
+        let mut sum = glam::Vec3::ZERO;
+        let mut seen = [usize::MAX; 8];
+        for k in 0..8 {
+            let offset = glam::I64Vec3::new(
+                (k & 1) as i64 * steps.x,
+                (k >> 1 & 1) as i64 * steps.y,
+                (k >> 2 & 1) as i64 * steps.z,
+            );
+            let b = bucket(base + offset, buckets);
+            // Two cells may share a bucket: count its photons once.
+            if seen[..k].contains(&b) {
+                continue;
+            }
+            seen[k] = b;
+            let range = self.starts[b] as usize..self.starts[b + 1] as usize;
+            for photon in &self.photons[range] {
+                let q = glam::Vec3::from_array(photon.position);
+                let d = glam::Vec3::from_array(photon.direction);
+                if (q - pf).length_squared() < r2 && d.dot(nf) < 0.0 {
+                    sum += glam::Vec3::from_array(photon.power);
+                }
+            }
+        }
+        sum.as_dvec3() / (std::f64::consts::PI * self.radius * self.radius)
+    }
+}
+
+const EMPTY: Photon = Photon {
+    position: [0.0; 3],
+    power: [0.0; 3],
+    direction: [0.0; 3],
+};
+
+fn cell_of(p: DVec3, cell: f64) -> glam::I64Vec3 {
+    (p / cell).floor().as_i64vec3()
+}
+
+fn bucket(c: glam::I64Vec3, buckets: usize) -> usize {
+    let h = (c.x as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15)
+        ^ (c.y as u64).wrapping_mul(0xc2b2_ae3d_27d4_eb4f)
+        ^ (c.z as u64).wrapping_mul(0x1656_67b1_9e37_79f9);
+    ((h ^ (h >> 29)) as usize) & (buckets - 1)
+}
+
+/// The gather radius of pass `pass`, from the first pass's.
+pub fn pass_radius(first: f64, pass: u32) -> f64 {
+    let mut r2 = first * first;
+    for i in 1..=pass {
+        r2 *= (f64::from(i) + ALPHA) / (f64::from(i) + 1.0);
+    }
+    r2.sqrt()
+}
+
+/// The first pass's radius: the median, over photons spread through the pass, of the
+/// distance to their `FIRST_NEIGHBOURS`-th nearest neighbour; `None` with too few photons
+/// to tell.
+pub fn first_radius(photons: &[Photon]) -> Option<f64> {
+    if photons.len() <= FIRST_NEIGHBOURS {
+        return None;
+    }
+    let stride = (photons.len() / RADIUS_PROBES).max(1);
+    let mut radii: Vec<f64> = photons
+        .iter()
+        .step_by(stride)
+        .map(|probe| {
+            let mut d2: Vec<f32> = photons
+                .iter()
+                .map(|q| {
+                    let a = glam::Vec3::from_array(probe.position);
+                    (glam::Vec3::from_array(q.position) - a).length_squared()
+                })
+                .collect();
+            let (_, kth, _) = d2.select_nth_unstable_by(FIRST_NEIGHBOURS, f32::total_cmp);
+            f64::from(kth.sqrt())
+        })
+        .collect();
+    let mid = radii.len() / 2;
+    let (_, median, _) = radii.select_nth_unstable_by(mid, f64::total_cmp);
+    (*median > 0.0).then_some(*median)
+}
+
+/// The maps of consecutive passes `first..first + maps.len()`.
+#[derive(Debug, Default)]
+pub struct PhotonMaps {
+    pub first: u32,
+    pub maps: Vec<PhotonMap>,
+}
+
+impl PhotonMaps {
+    /// The map a sample of index `index` gathers from.
+    pub fn pass(&self, index: u32) -> Option<&PhotonMap> {
+        index
+            .checked_sub(self.first)
+            .and_then(|i| self.maps.get(i as usize))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn photon(p: DVec3, power: f64) -> Photon {
+        Photon::new(p, DVec3::splat(power), -DVec3::Y)
+    }
+
+    #[test]
+    fn the_gather_counts_photons_inside_the_radius_from_the_front() {
+        let photons = vec![
+            photon(DVec3::new(0.1, 0.0, 0.0), 1.0),
+            photon(DVec3::new(-0.2, 0.0, 0.3), 2.0),
+            // Outside the radius 0.5.
+            photon(DVec3::new(0.6, 0.0, 0.0), 4.0),
+            // Arriving from below the surface.
+            Photon::new(DVec3::ZERO, DVec3::splat(8.0), DVec3::Y),
+        ];
+        let map = PhotonMap::new(photons, 0.5);
+        let e = map.irradiance(DVec3::ZERO, DVec3::Y);
+        let area = std::f64::consts::PI * 0.25;
+        assert!((e.x - 3.0 / area).abs() < 1e-6, "{e}");
+    }
+
+    #[test]
+    fn the_gather_finds_photons_across_cell_boundaries() {
+        // A ring of photons around points near cell corners: each must be found whole.
+        for centre in [DVec3::ZERO, DVec3::splat(0.999), DVec3::new(-3.0, 2.0, 1.001)] {
+            let photons: Vec<Photon> = (0..64)
+                .map(|k| {
+                    let a = k as f64 * 0.1;
+                    photon(centre + 0.49 * DVec3::new(a.cos(), 0.0, a.sin()), 1.0)
+                })
+                .collect();
+            let map = PhotonMap::new(photons, 0.5);
+            let e = map.irradiance(centre, DVec3::Y) * std::f64::consts::PI * 0.25;
+            assert!((e.x - 64.0).abs() < 1e-3, "{centre}: {e}");
+        }
+    }
+
+    #[test]
+    fn radii_shrink_as_knaus_and_zwicker_ask() {
+        assert_eq!(pass_radius(2.0, 0), 2.0);
+        let r1 = pass_radius(2.0, 1);
+        assert!((r1 * r1 - 4.0 * (1.0 + ALPHA) / 2.0).abs() < 1e-12);
+        // r^2 falls as pass^(alpha - 1) for large passes.
+        let (a, b) = (pass_radius(1.0, 1000), pass_radius(1.0, 8000));
+        let slope = (b * b / (a * a)).ln() / 8f64.ln();
+        assert!((slope - (ALPHA - 1.0)).abs() < 0.01, "{slope}");
+    }
+
+    #[test]
+    fn the_first_radius_holds_the_asked_neighbours() {
+        // A 100 x 100 grid of spacing 0.01: the 24th neighbour is about sqrt(24/pi) cells away.
+        let photons: Vec<Photon> = (0..10_000)
+            .map(|i| photon(DVec3::new((i % 100) as f64, 0.0, (i / 100) as f64) * 0.01, 1.0))
+            .collect();
+        let r = first_radius(&photons).expect("enough photons");
+        let expected = 0.01 * (FIRST_NEIGHBOURS as f64 / std::f64::consts::PI).sqrt();
+        assert!((r / expected - 1.0).abs() < 0.2, "{r} against {expected}");
+        assert_eq!(first_radius(&photons[..10]), None);
+    }
+}
