@@ -98,10 +98,14 @@ def povray(scene, args, tmp, declares):
     return block_average(read_exr(out), K), time.time() - t
 
 
-def svg_chart(path, title, points, floor, direct_floor, pen_points):
+def svg_chart(path, title, points, floor, direct_floor, pen_points,
+              direct_label="radiosity off (filter floor)"):
     """Log-log RMSE against seconds: POV-Ray's qualities, penumbra's spp, the floors."""
     xs = [p[1] for p in points + pen_points]
-    ys = [p[2] for p in points + pen_points] + [floor, direct_floor]
+    floors = [(floor, "#888", "penumbra reference noise")]
+    if direct_label:
+        floors.append((direct_floor, "#c80", direct_label))
+    ys = [p[2] for p in points + pen_points] + [y for y, _, _ in floors]
     x0, x1 = math.log10(min(xs)) - 0.2, math.log10(max(xs)) + 0.2
     y0, y1 = math.log10(max(min(ys), 1e-5)) - 0.2, math.log10(max(ys)) + 0.2
     W, H, m = 560, 360, 60
@@ -122,8 +126,7 @@ def svg_chart(path, title, points, floor, direct_floor, pen_points):
     for d in range(math.floor(y0), math.ceil(y1) + 1):
         if y0 <= d <= y1:
             e.append(f'<text x="{m-4}" y="{py(10**d)+4}" text-anchor="end">{10**d:g}</text>')
-    for y, colour, label in [(floor, "#888", "penumbra reference noise"),
-                             (direct_floor, "#c80", "radiosity off (filter floor)")]:
+    for y, colour, label in floors:
         e.append(f'<line x1="{m}" y1="{py(y)}" x2="{W-m}" y2="{py(y)}" stroke="{colour}" '
                  f'stroke-dasharray="4 3"/><text x="{W-m}" y="{py(y)-3}" '
                  f'text-anchor="end" fill="{colour}">{label}</text>')

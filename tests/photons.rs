@@ -76,7 +76,7 @@ camera { orthographic location <0, 10, 0> direction -y right x*4 up z*4 }
 light_source { <0, 4, 0> color rgb 0.25 }
 plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
 box { <2, 0, -3>, <2.2, 3, 3> pigment { rgb 0 }
-  finish { ambient 0 diffuse 0 reflection 1 } photons { target } }
+  finish { ambient 0 diffuse 0 reflection 1 } photons { target reflection on } }
 ";
 
 #[test]
@@ -103,6 +103,71 @@ fn a_plane_mirror_caustic_is_the_mirror_image_light() {
     assert!(mean.abs() < T_7 * se, "mean difference {mean} (SE {se})");
 }
 
+/// A target's photons neither reflect nor refract unless told (POV-Ray shoots none at a
+/// plain `photons { target }`: photon time 0.000 s): the floor gets the light alone.
+#[test]
+fn a_target_without_reflection_on_gets_no_photons() {
+    let size = 48;
+    let world = |p: usize| (p as f64 + 0.5) / size as f64 * 4.0 - 2.0;
+    let source = MIRROR.replace("target reflection on", "target");
+    let image = render(&source, &options(size, 4, 1, 2));
+    let worst = image
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| world(i % size) < 1.8)
+        .map(|(i, c)| {
+            let (x, z) = (world(i % size), -world(i / size));
+            (f64::from(c[0]) - 0.25 * 4.0 / (x * x + z * z + 16.0).sqrt()).abs()
+        })
+        .fold(0.0, f64::max);
+    // The direct light varies by under 0.003 across a pixel; a caustic adds at least 0.17.
+    assert!(
+        worst < 0.01,
+        "a pixel differs from the direct light by {worst}"
+    );
+}
+
+/// The mirror again under a 0.8 x 0.8 area light whose photons start all over it
+/// (`photons { area_light }`): the caustic is the mean over the light's points of their
+/// images' light, while the direct light (area_illumination off) is the centre's, as no
+/// point of the floor seen is shadowed.
+const MIRROR_AREA: &str = "#version 3.7;
+global_settings { assumed_gamma 1.0 photons { count 100000 } }
+camera { orthographic location <0, 10, 0> direction -y right x*4 up z*4 }
+light_source { <0, 4, 0> color rgb 0.25 area_light x*0.8, z*0.8, 3, 3
+  photons { area_light } }
+plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+box { <2, 0, -3>, <2.2, 3, 3> pigment { rgb 0 }
+  finish { ambient 0 diffuse 0 reflection 1 } photons { target reflection on } }
+";
+
+#[test]
+fn an_area_light_caustic_averages_its_points_images() {
+    let size = 48;
+    let world = |p: usize| (p as f64 + 0.5) / size as f64 * 4.0 - 2.0;
+    // The images' light by the midpoint rule over a 64 x 64 grid of the light (the
+    // integrand is smooth: its error is below 1e-6).
+    let images = |x: f64, z: f64| {
+        let m = 64;
+        let mut sum = 0.0;
+        for i in 0..m {
+            for j in 0..m {
+                let qx = ((i as f64 + 0.5) / m as f64 - 0.5) * 0.8;
+                let qz = ((j as f64 + 0.5) / m as f64 - 0.5) * 0.8;
+                sum += 4.0 / ((x - (4.0 - qx)).powi(2) + (z - qz).powi(2) + 16.0).sqrt();
+            }
+        }
+        sum / (m * m) as f64
+    };
+    let exact = |x: f64, z: f64| 0.25 * (4.0 / (x * x + z * z + 16.0).sqrt() + images(x, z));
+    let (mean, se) = replicate_mean(MIRROR_AREA, size, 16, |x, y, v| {
+        (world(x) < 1.8).then(|| v - exact(world(x), -world(y)))
+    });
+    eprintln!("area mirror: mean difference {mean:.6} (SE {se:.6})");
+    assert!(se < 0.001, "standard error {se} too large for the test");
+    assert!(mean.abs() < T_7 * se, "mean difference {mean} (SE {se})");
+}
+
 const LENS: &str = "#version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 10 photons { count 100000 } }
 camera { orthographic location <0, 10, 0> direction -y right x*10 up z*10 }
@@ -119,7 +184,10 @@ fn a_lens_caustic_carries_what_enters_the_lens() {
     let (mean, se) = replicate_mean(LENS, size, 16, |_, _, v| Some(v));
     eprintln!("lens: floor mean {mean:.6} (SE {se:.6}), empty floor 0.5");
     assert!(se < 0.0015, "standard error {se} too large for the test");
-    assert!((mean - 0.5).abs() < T_7 * se, "floor mean {mean} (SE {se}), empty floor 0.5");
+    assert!(
+        (mean - 0.5).abs() < T_7 * se,
+        "floor mean {mean} (SE {se}), empty floor 0.5"
+    );
     // Without photons the glass would cast a filtered, unfocused shadow of the same mean:
     // check the caustic is focused (a bright core above the empty floor's 0.5).
     let image = render(LENS, &options(size, 16, 1, 2));
@@ -139,7 +207,9 @@ fn photons_are_the_same_for_any_thread_count_and_any_split() {
             sample_range: Some(range),
             ..options(size, 8, 3, 2)
         };
-        penumbra::render_film(&loaded.scene, &o, &()).expect("render").0
+        penumbra::render_film(&loaded.scene, &o, &())
+            .expect("render")
+            .0
     };
     let mut merged = part(0..3);
     merged.merge(&part(3..8));

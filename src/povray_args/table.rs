@@ -550,6 +550,15 @@ pub const OPTIONS: &[PovOption] = &[
         ["bounding method", IGNORED],
     ),
     opt(
+        "HR",
+        "High_Reproducibility",
+        NotApplicable,
+        [
+            "repeatable radiosity across threads (3.7)",
+            "accepted with a note: every penumbra render is bit-identical for its seed",
+        ],
+    ),
+    opt(
         "UL",
         "Light_Buffer",
         NotApplicable,

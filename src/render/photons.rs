@@ -239,7 +239,11 @@ mod tests {
     #[test]
     fn the_gather_finds_photons_across_cell_boundaries() {
         // A ring of photons around points near cell corners: each must be found whole.
-        for centre in [DVec3::ZERO, DVec3::splat(0.999), DVec3::new(-3.0, 2.0, 1.001)] {
+        for centre in [
+            DVec3::ZERO,
+            DVec3::splat(0.999),
+            DVec3::new(-3.0, 2.0, 1.001),
+        ] {
             let photons: Vec<Photon> = (0..64)
                 .map(|k| {
                     let a = k as f64 * 0.1;
@@ -265,13 +269,20 @@ mod tests {
 
     #[test]
     fn the_first_radius_holds_the_asked_neighbours() {
-        // A 100 x 100 grid of spacing 0.01: the 24th neighbour is about sqrt(24/pi) cells away.
+        // A 100 x 100 grid of spacing 0.01: the k-th neighbour is about sqrt(k/pi) cells
+        // away. The photons are listed in a shuffled order (7919 is prime to 10^4), so the
+        // evenly strided probes (every 50th) fall in columns 13 and 63, inside the grid,
+        // not on its edge where neighbours are fewer.
         let photons: Vec<Photon> = (0..10_000)
-            .map(|i| photon(DVec3::new((i % 100) as f64, 0.0, (i / 100) as f64) * 0.01, 1.0))
+            .map(|i| {
+                let j = (i * 7919 + 13) % 10_000;
+                let (x, z) = ((j % 100) as f64, (j / 100) as f64);
+                photon(DVec3::new(x, 0.0, z) * 0.01, 1.0)
+            })
             .collect();
         let r = first_radius(&photons).expect("enough photons");
         let expected = 0.01 * (FIRST_NEIGHBOURS as f64 / std::f64::consts::PI).sqrt();
         assert!((r / expected - 1.0).abs() < 0.2, "{r} against {expected}");
-        assert_eq!(first_radius(&photons[..10]), None);
+        assert_eq!(first_radius(&photons[..FIRST_NEIGHBOURS]), None);
     }
 }

@@ -301,7 +301,12 @@ impl Builder {
         };
         if top {
             self.world.add_top(item);
-            if self.photons && f.photons.is_some_and(|p| p.target) {
+            // A target that neither reflects nor refracts photons gets none (POV-Ray: photon
+            // time 0.000 s for such a scene).
+            if self.photons
+                && f.photons
+                    .is_some_and(|p| p.target && (p.reflection || p.refraction))
+            {
                 self.world.add_photon_target(item);
             }
         }

@@ -96,49 +96,59 @@ impl Evaluator<'_> {
     /// on|off pass_through }`, after the keyword.
     pub(super) fn object_photons(&mut self, start: ObjectPhotons) -> R<ObjectPhotons> {
         self.next()?;
-        self.block_items("photons", "the object's photons block", start, |ev, tok, p| {
-            let word = tok.ident().unwrap_or("");
-            match word {
-                "target" => {
-                    ev.next()?;
-                    if ev.starts_float()? {
-                        ev.float()?;
+        self.block_items(
+            "photons",
+            "the object's photons block",
+            start,
+            |ev, tok, p| {
+                let word = tok.ident().unwrap_or("");
+                match word {
+                    "target" => {
+                        ev.next()?;
+                        if ev.starts_float()? {
+                            ev.float()?;
+                        }
+                        p.target = true;
                     }
-                    p.target = true;
+                    "refraction" => p.refraction = ev.on_off()?,
+                    "reflection" => p.reflection = ev.on_off()?,
+                    "collect" => p.no_collect = !ev.on_off()?,
+                    "pass_through" => {
+                        ev.next()?;
+                        p.pass_through = ev.optional_bool()?;
+                    }
+                    "split_union" => {
+                        ev.next()?;
+                        ev.optional_bool()?;
+                    }
+                    _ => return Err(ev.stray_in_block(tok, "the object's photons block")),
                 }
-                "refraction" => p.refraction = ev.on_off()?,
-                "reflection" => p.reflection = ev.on_off()?,
-                "collect" => p.no_collect = !ev.on_off()?,
-                "pass_through" => {
-                    ev.next()?;
-                    p.pass_through = ev.optional_bool()?;
-                }
-                "split_union" => {
-                    ev.next()?;
-                    ev.optional_bool()?;
-                }
-                _ => return Err(ev.stray_in_block(tok, "the object's photons block")),
-            }
-            Ok(())
-        })
+                Ok(())
+            },
+        )
     }
 
     /// A light's `photons { refraction on|off reflection on|off area_light }`, after the
     /// keyword.
     pub(super) fn light_photons(&mut self, start: LightPhotons) -> R<LightPhotons> {
         self.next()?;
-        self.block_items("photons", "the light's photons block", start, |ev, tok, p| {
-            match tok.ident().unwrap_or("") {
-                "refraction" => p.no_refraction = !ev.on_off()?,
-                "reflection" => p.no_reflection = !ev.on_off()?,
-                "area_light" => {
-                    ev.next()?;
-                    p.area_light = ev.optional_bool()?;
+        self.block_items(
+            "photons",
+            "the light's photons block",
+            start,
+            |ev, tok, p| {
+                match tok.ident().unwrap_or("") {
+                    "refraction" => p.no_refraction = !ev.on_off()?,
+                    "reflection" => p.no_reflection = !ev.on_off()?,
+                    "area_light" => {
+                        ev.next()?;
+                        p.area_light = ev.optional_bool()?;
+                    }
+                    _ => return Err(ev.stray_in_block(tok, "the light's photons block")),
                 }
-                _ => return Err(ev.stray_in_block(tok, "the light's photons block")),
-            }
-            Ok(())
-        })
+                Ok(())
+            },
+        )
     }
 
     /// The keyword, then `on`/`off` (or any boolean; nothing means on).

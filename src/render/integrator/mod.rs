@@ -32,9 +32,9 @@ use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
 use crate::scene::{Colour, Finish, Radiosity};
 
 use super::RenderOptions;
-use super::photons::PhotonMaps;
 use super::dimensions::{DimensionLayout, Purpose};
 use super::lights::{AreaLightMode, LightSamples};
+use super::photons::PhotonMaps;
 use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
 use crate::render::fog::{Segment, fog_effect};

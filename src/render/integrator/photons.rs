@@ -11,7 +11,7 @@ use glam::DVec3;
 use rand_pcg::Pcg32;
 
 use crate::geometry::{Aabb, Ray, flags, offset_point};
-use crate::render::lights::PreparedLight;
+use crate::render::lights::{AreaLightMode, PreparedLight};
 use crate::render::photons::Photon;
 use crate::render::sampler::{mix, unit_f64};
 use crate::scene::LightKind;
@@ -23,6 +23,7 @@ use super::{Branches, Integrator, Path, Shading, Top, branches};
 const PHOTON_SALT: u64 = 0x5048_4f54_4f4e_0001;
 
 /// Where one (light, target) pair's photons start and how much light each carries.
+#[derive(Clone, Copy)]
 struct Beam {
     /// The cone's apex (point and spot lights) or the beam's centre (parallel lights).
     origin: DVec3,
@@ -38,13 +39,18 @@ struct Beam {
 
 impl Beam {
     fn new(light: &PreparedLight, target: &Aabb) -> Option<Beam> {
+        Beam::from(light, light.location, target)
+    }
+
+    /// The beam as if the light stood at `origin` (one point of an area light).
+    fn from(light: &PreparedLight, origin: DVec3, target: &Aabb) -> Option<Beam> {
         let centre = (target.min + target.max) * 0.5;
         let r = (target.max - target.min).length() * 0.5;
         match light.kind {
             LightKind::Point | LightKind::Spot { .. } => {
-                let to = centre - light.location;
+                let to = centre - origin;
                 let d = to.length();
-                if !(d > 0.0) {
+                if d.is_nan() || d <= 0.0 {
                     return None;
                 }
                 let cos_max = if d <= r {
@@ -53,7 +59,7 @@ impl Beam {
                     (1.0 - (r / d).powi(2)).sqrt()
                 };
                 Some(Beam {
-                    origin: light.location,
+                    origin,
                     axis: to / d,
                     cos_max,
                     radius: 0.0,
@@ -88,7 +94,7 @@ impl Beam {
             let dir = self.axis * cos + across * sin;
             let solid_angle = std::f64::consts::TAU * (1.0 - self.cos_max);
             let cone = light
-                .incidence(light.location + dir)
+                .incidence_from(self.origin + dir, self.origin)
                 .map_or(0.0, |i| i.factor / light.fade(1.0));
             let power = light.colour * (solid_angle / f64::from(n) * cone);
             (Ray::new(self.origin, dir), power)
@@ -102,6 +108,22 @@ impl Beam {
             (Ray::new(start, self.axis), power)
         }
     }
+}
+
+/// With `photons { area_light }` a point or spot area light's photons start uniformly
+/// over its area (its disc if circular), each with the cone towards the target from where
+/// it starts, so the caustic averages the light's points as its direct light does with
+/// area_illumination; otherwise (POV-Ray's default) they start at its centre.
+fn area_origin(light: &PreparedLight, target: &Aabb, rng: &mut Pcg32) -> Option<DVec3> {
+    let area = light.area.as_ref().filter(|_| light.photons.area_light)?;
+    if !matches!(light.kind, LightKind::Point | LightKind::Spot { .. }) {
+        return None;
+    }
+    // `orient` turns the light to face the target, as it faces a shaded point.
+    let towards = light.location - (target.min + target.max) * 0.5;
+    let frame = area.frame(light.location, towards);
+    let s = (unit_f64(rng), unit_f64(rng));
+    Some(area.sample_point(&frame, s, AreaLightMode::Continuous, true))
 }
 
 impl Integrator<'_> {
@@ -131,6 +153,13 @@ impl Integrator<'_> {
                     ^ mix(t as u64);
                 let mut rng = Pcg32::new(key, mix(key) | 1);
                 for k in 0..n {
+                    let beam = match area_origin(light, target, &mut rng) {
+                        Some(origin) => match Beam::from(light, origin, target) {
+                            Some(b) => b,
+                            None => continue,
+                        },
+                        None => beam,
+                    };
                     let (ray, power) = beam.photon(light, (k, n), &mut rng);
                     if power != DVec3::ZERO {
                         self.trace_photon(ray, power, (light, &beam), &mut rng, &mut out);
