@@ -66,7 +66,16 @@ pub fn warp_chain(warps: &[Warp], turbulence: Option<&Turbulence>, mut p: DVec3)
 /// The final pattern value in [0, 1] at a pattern-space point (before the pattern's own
 /// warps), with frequency, phase and wave applied. List patterns give index / (n - 1).
 pub fn pattern_value(pattern: &Pattern, p: DVec3) -> f64 {
+    pattern_value_at(pattern, p, DVec3::ZERO)
+}
+
+/// As [`pattern_value`], where the surface's unit world normal is known (for `slope`;
+/// without one, zero, slope reads as across its direction).
+pub fn pattern_value_at(pattern: &Pattern, p: DVec3, normal: DVec3) -> f64 {
     let q = warp_point(pattern, p);
+    if let PatternKind::Slope(slope) = &pattern.kind {
+        return apply_wave(pattern, slope_value(slope, q, normal));
+    }
     // A list pattern's value is the entry's index, unscaled: hexagon gives 0, 1 and 2
     // (measured with POV-Ray's `function { pattern { hexagon } }`), so its cells' edges
     // tilt a normal twice as far as 0, 0.5, 1 would (textures/patterns/hexagon.pov).
@@ -138,6 +147,29 @@ fn spiral_angle(x: f64, y: f64, r: f64) -> f64 {
 /// 1.00001 (measured on planes `gradient y` at y = 1.25, 2, 3: 0.25, 0, 0, where the
 /// general wrap alone would give 0.24999, 0.99998, 0.99997); 1 itself stays 1, and negative
 /// values are left to the general wrap (y = -0.5 reads 0.5, -1.5 reads 0.50001).
+/// `slope`: see [`crate::scene::Slope`] for the rule and how it was measured. Values past
+/// 1 wrap as gradient's do.
+fn slope_value(slope: &crate::scene::Slope, p: DVec3, normal: DVec3) -> f64 {
+    let ranged = |v: f64, (lo, hi): (f64, f64)| {
+        if hi != lo { (v - lo) / (hi - lo) } else { v }
+    };
+    let cos = normal.dot(slope.direction).clamp(-1.0, 1.0);
+    let s = ranged(0.5 + cos.asin() / PI, slope.range);
+    let v = match slope.altitude {
+        None => s,
+        Some((a, weight, range)) => {
+            let h = ranged(p.dot(a), range);
+            let total = slope.weight + weight;
+            if total > 0.0 {
+                (slope.weight * s + weight * h) / total
+            } else {
+                s
+            }
+        }
+    };
+    gradient_value(v)
+}
+
 fn gradient_value(v: f64) -> f64 {
     if v > 1.0 { v - v.floor() } else { v }
 }
@@ -165,6 +197,7 @@ fn inner_generator(generator: u8) -> u8 {
 fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
     match &pattern.kind {
         PatternKind::Gradient(g) => gradient_value(p.dot(*g)),
+        PatternKind::Slope(slope) => slope_value(slope, p, DVec3::ZERO),
         // Measured: values above 1 wrap as gradient's do (1.25 and 10.25 read 0.25, 1 stays
         // 1), and -0.25 reads 0.75.
         PatternKind::Function(f) => gradient_value(f.at(p)),

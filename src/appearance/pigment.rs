@@ -1,7 +1,7 @@
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 
 use super::blend::{Blend, blend_position, mix};
-use super::pattern::{pattern_index, pattern_value, warp_chain};
+use super::pattern::{pattern_index, pattern_value_at, warp_chain};
 use std::f64::consts::{PI, TAU};
 
 use crate::geometry::TexturePoint;
@@ -11,19 +11,19 @@ use crate::scene::{Colour, ImageMap, MapType, PatternKind, Pigment, PigmentKind}
 /// carries the surface's (u, v) for pigments with `uv_mapping`.
 pub fn evaluate_pigment(pigment: &Pigment, at: impl Into<TexturePoint>) -> Colour {
     let at = at.into();
-    pigment_at(pigment, at.world, at.uv)
+    pigment_at(pigment, at)
 }
 
 /// `average pigment_map { [w1 P1] [w2 P2] ... }`: (w1 P1 + w2 P2 + ...) / (w1 + w2 + ...),
 /// every channel (filter and transmit too).
-fn average(map: &[(f64, Pigment)], world: DVec3, uv: DVec2) -> Colour {
+fn average(map: &[(f64, Pigment)], at: TexturePoint) -> Colour {
     let total: f64 = map.iter().map(|e| e.0).sum();
     if map.is_empty() || total == 0.0 {
         return Colour::BLACK;
     }
     let mut sum = Colour::BLACK;
     for (w, p) in map {
-        let c = pigment_at(p, world, uv);
+        let c = pigment_at(p, at);
         sum.rgb += c.rgb * *w;
         sum.filter += c.filter * w;
         sum.transmit += c.transmit * w;
@@ -35,13 +35,12 @@ fn average(map: &[(f64, Pigment)], world: DVec3, uv: DVec2) -> Colour {
     }
 }
 
-fn pigment_at(pigment: &Pigment, world: DVec3, uv: DVec2) -> Colour {
+fn pigment_at(pigment: &Pigment, mut at: TexturePoint) -> Colour {
     // A uv-mapped pigment and everything inside it see the point (u, v, 0).
-    let world = if pigment.uv_mapping {
-        uv.extend(0.0)
-    } else {
-        world
-    };
+    if pigment.uv_mapping {
+        at.world = at.uv.extend(0.0);
+    }
+    let world = at.world;
     match &pigment.kind {
         PigmentKind::Solid(c) => *c,
         PigmentKind::List { pattern, entries } => {
@@ -50,11 +49,11 @@ fn pigment_at(pigment: &Pigment, world: DVec3, uv: DVec2) -> Colour {
             }
             let p = pigment.transform.inverse_point(world);
             let index = pattern_index(pattern, p).min(entries.len() - 1);
-            pigment_at(&entries[index], world, uv)
+            pigment_at(&entries[index], at)
         }
         PigmentKind::ColourMap { pattern, map } => {
             let p = pigment.transform.inverse_point(world);
-            let v = pattern_value(pattern, p);
+            let v = pattern_value_at(pattern, p, at.normal);
             match blend_position(map, v, |e| e.0) {
                 Blend::One(i) => map[i].1,
                 Blend::Two(i, t) => mix(&map[i].1, &map[i + 1].1, t),
@@ -68,16 +67,16 @@ fn pigment_at(pigment: &Pigment, world: DVec3, uv: DVec2) -> Colour {
         PigmentKind::PigmentMap { pattern, map }
             if matches!(pattern.kind, PatternKind::Average) =>
         {
-            average(map, world, uv)
+            average(map, at)
         }
         PigmentKind::PigmentMap { pattern, map } => {
             let p = pigment.transform.inverse_point(world);
-            let v = pattern_value(pattern, p);
+            let v = pattern_value_at(pattern, p, at.normal);
             match blend_position(map, v, |e| e.0) {
-                Blend::One(i) => pigment_at(&map[i].1, world, uv),
+                Blend::One(i) => pigment_at(&map[i].1, at),
                 Blend::Two(i, t) => mix(
-                    &pigment_at(&map[i].1, world, uv),
-                    &pigment_at(&map[i + 1].1, world, uv),
+                    &pigment_at(&map[i].1, at),
+                    &pigment_at(&map[i + 1].1, at),
                     t,
                 ),
                 Blend::None => Colour::BLACK,

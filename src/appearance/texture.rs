@@ -11,7 +11,7 @@ use super::blend::{Blend, blend_position, mix};
 use super::evaluate_pigment;
 use super::noise::lattice_hash;
 use super::normal::perturb;
-use super::pattern::pattern_value;
+use super::pattern::pattern_value_at;
 
 /// At most this many layers are shaded; POV-Ray scenes rarely stack more than a few.
 pub const MAX_LAYERS: usize = 8;
@@ -124,7 +124,7 @@ fn push_texture<'a>(layers: &mut Layers<'a>, t: &'a Texture, p: TexturePoint, de
             return;
         }
         let q = map.transform.inverse_point(map_point(map, p));
-        let v = pattern_value(&map.pattern, q);
+        let v = pattern_value_at(&map.pattern, q, p.normal);
         match blend_position(&map.entries, v, |e| e.0) {
             Blend::One(i) => push_texture(layers, &map.entries[i].1, p, depth + 1),
             Blend::Two(i, w) => {
@@ -159,7 +159,8 @@ pub fn perturbed_normal(texture: &Texture, at: impl Into<TexturePoint>, n: DVec3
     let mut t = texture;
     for _ in 0..MAX_NESTING {
         let Some(map) = &t.map else { break };
-        let v = pattern_value(&map.pattern, map.transform.inverse_point(map_point(map, p)));
+        let q = map.transform.inverse_point(map_point(map, p));
+        let v = pattern_value_at(&map.pattern, q, n);
         if matches!(map.pattern.kind, PatternKind::Average) {
             match average_pick(map, p.world) {
                 Some(i) => t = &map.entries[i].1,

@@ -105,6 +105,8 @@ pub enum MaterialBlend {
 pub struct TexturePoint {
     pub world: DVec3,
     pub uv: DVec2,
+    /// The unit shading normal facing the viewer, for `slope`; zero where none is known.
+    pub normal: DVec3,
 }
 
 impl From<DVec3> for TexturePoint {
@@ -113,6 +115,7 @@ impl From<DVec3> for TexturePoint {
         TexturePoint {
             world,
             uv: world.truncate(),
+            normal: DVec3::ZERO,
         }
     }
 }
@@ -122,6 +125,7 @@ impl From<&SurfacePoint> for TexturePoint {
         TexturePoint {
             world: s.point,
             uv: s.uv,
+            normal: s.shading_normal,
         }
     }
 }
@@ -763,6 +767,9 @@ impl World {
         TexturePoint {
             world: point,
             uv: self.uv(&self.primitives[hit.primitive as usize], hit.part, point),
+            // Shadow rays skip the normal: a slope pattern reads there as across its
+            // direction (a filtering surface textured by slope is the only one to differ).
+            normal: DVec3::ZERO,
         }
     }
 

@@ -33,7 +33,7 @@ pub use spline::{
 pub use texture::{
     BlackHole, Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap,
     Interior, Irid, MapType, MappingKind, MappingWarp, Normal, Orientation, Pattern, PatternKind,
-    Pigment, PigmentKind, Quilted, Reflection, RepeatWarp, SlopeEntry, Texture, TextureMap,
+    Pigment, PigmentKind, Quilted, Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap,
     Turbulence, VoxelGrid, Warp, Wave,
 };
 

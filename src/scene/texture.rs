@@ -221,6 +221,9 @@ pub enum PatternKind {
     Fractal(Fractal),
     /// `cells`: one random value in [0, 1) per unit cube.
     Cells,
+    /// `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }`: how far the surface's normal
+    /// turns towards d, optionally mixed with the height along a (src/appearance/pattern.rs).
+    Slope(Slope),
     /// `image_pattern { png "file" }`: the image's grey (0.297 r + 0.589 g + 0.114 b) or,
     /// with `use_alpha`, its transparency.
     ImagePattern {
@@ -280,6 +283,23 @@ impl Default for Crackle {
             solid: false,
         }
     }
+}
+
+/// `slope`'s settings, as measured with POV-Ray 3.7 on a unit sphere: the slope part is
+/// 0.5 + asin(n . d) / pi for the unit normal n and unit d (1 facing d, 0.5 across, 0 away),
+/// mapped by (v - lo) / (hi - lo); the altitude part is p . a (unit a, pattern space) mapped
+/// by its own (lo, hi); with both, they mix weighted by the lengths of d and a
+/// (`slope { y*3 altitude y, -1, 1 }` reads (3 s + h) / 4). The normal is the world's: the
+/// texture's own transforms leave the slope part unchanged (rotate z*30 and scale <1,3,1>
+/// read the same values as none).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slope {
+    pub direction: DVec3,
+    pub range: (f64, f64),
+    /// The unit altitude direction, its weight against the slope's and its (lo, hi).
+    pub altitude: Option<(DVec3, f64, (f64, f64))>,
+    /// The slope part's weight: the length of the slope vector.
+    pub weight: f64,
 }
 
 /// `quilted`'s settings: the two inner control points of the cubic Bezier curve that

@@ -23,7 +23,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "aoi",
     "facets",
     "pavement",
-    "slope",
     "square",
     "tiling",
     "triangular",
@@ -36,6 +35,7 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
 const PATTERNS: &[&str] = &[
     "image_pattern",
     "density_file",
+    "slope",
     "quilted",
     "mandel",
     "julia",
@@ -502,6 +502,7 @@ impl Evaluator<'_> {
                     use_alpha,
                 }
             }
+            "slope" => PatternKind::Slope(self.slope()?),
             "density_file" => PatternKind::DensityFile(std::sync::Arc::new(self.density_file()?)),
             "function" => {
                 let span = self.peek()?.span;
@@ -513,6 +514,64 @@ impl Evaluator<'_> {
                 PatternKind::PigmentPattern(Box::new(pig))
             }
         })
+    }
+
+    /// `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }` (the braces may be left out,
+    /// as in POV-Ray's older `slope <d>`).
+    fn slope(&mut self) -> R<crate::scene::Slope> {
+        let braced = self.peek()?.is_punct(Punct::LBrace);
+        if braced {
+            let open = self.next()?;
+            self.enter(open.span)?;
+        }
+        let r = self.slope_body();
+        if braced {
+            self.leave();
+        }
+        let slope = r?;
+        if braced {
+            self.expect(Punct::RBrace, "to close the slope")?;
+        }
+        Ok(slope)
+    }
+
+    fn slope_body(&mut self) -> R<crate::scene::Slope> {
+        let tok = self.peek()?;
+        if tok.is_ident("point_at") {
+            return Err(self.unsupported(&tok, "slope { point_at ... }"));
+        }
+        let d = self.vector3()?;
+        if d.length() == 0.0 || !d.is_finite() {
+            return Err(self.err(tok.span, "the slope direction must be a non-zero vector"));
+        }
+        let range = self.slope_range()?;
+        let altitude = if self.eat_ident("altitude")? {
+            let at = self.peek()?;
+            let a = self.vector3()?;
+            if !a.is_finite() {
+                return Err(self.err(at.span, "the altitude direction must be finite"));
+            }
+            let range = self.slope_range()?;
+            Some((a.normalize_or_zero(), a.length(), range))
+        } else {
+            None
+        };
+        Ok(crate::scene::Slope {
+            direction: d.normalize(),
+            range,
+            altitude,
+            weight: d.length(),
+        })
+    }
+
+    /// `, lo, hi` after a slope or altitude vector; (0, 1) without.
+    fn slope_range(&mut self) -> R<(f64, f64)> {
+        if !self.eat(Punct::Comma)? {
+            return Ok((0.0, 1.0));
+        }
+        let lo = self.float()?;
+        self.expect(Punct::Comma, "between the low and high slope values")?;
+        Ok((lo, self.float()?))
     }
 
     /// `df3 "file" [interpolate k]` after `density_file`.

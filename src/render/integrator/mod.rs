@@ -28,7 +28,7 @@ use glam::DVec3;
 use crate::appearance::finish::{metallic_tint, reflectivity};
 use crate::appearance::texture::Layers;
 use crate::appearance::{blended_layers, perturbed_normal, sky_colour, texture_layers};
-use crate::geometry::{Hit, Ray, SurfacePoint, flags, offset_point};
+use crate::geometry::{Hit, Ray, SurfacePoint, TexturePoint, flags, offset_point};
 use crate::scene::{Colour, Finish, Radiosity};
 
 use super::RenderOptions;
@@ -130,6 +130,18 @@ struct Shading<'s> {
     /// Where shadow rays start: just off the surface, on the ray's side.
     shadow_origin: DVec3,
     path: Path,
+}
+
+impl Shading<'_> {
+    /// Where the texture is looked up: the hit with its perturbed, viewer-facing normal
+    /// (POV-Ray's slope pattern reads the bumped normal: a `normal { bumps }` beside it
+    /// changes its values by up to 0.8).
+    fn texture_point(&self) -> TexturePoint {
+        TexturePoint {
+            normal: self.n,
+            ..TexturePoint::from(&self.surface)
+        }
+    }
 }
 
 /// What the texture's layers leave for the secondary rays: the top layer's pigment and
@@ -397,9 +409,9 @@ impl<'a> Integrator<'a> {
                     .world
                     .blend_weights(b)
                     .map(|(m, w)| (&self.scene.materials[m as usize].texture, w)),
-                &s.surface,
+                s.texture_point(),
             ),
-            None => texture_layers(&s.material.texture, &s.surface),
+            None => texture_layers(&s.material.texture, s.texture_point()),
         }
     }
 

@@ -10,4 +10,3 @@ sphere { 0, 1 photons { target } }
 // warning: 3:1 unsupported: `rainbow` is not supported yet; it is left out
 // warning: 5:10 unsupported: `ovus` is not supported yet; the object is left out
 // warning: 6:25 unsupported: `parametric` is not supported yet; it is left out
-// warning: 7:15 unsupported: `photons` is not supported yet; it is left out
