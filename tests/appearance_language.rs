@@ -146,3 +146,51 @@ fn degenerate_patterns_give_finite_colours() {
         assert!(c.iter().all(|l| l.colour.rgb.is_finite()));
     }
 }
+
+#[test]
+fn a_transform_before_the_texture_map_moves_its_entries_too() {
+    // POV-Ray transforms the entries with the texture whatever the order (measured: the
+    // entry's gradient x repeats every 4 units in both textures).
+    let s = load(
+        "#version 3.7;\n#declare T = texture { pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } } }\n\
+         plane { z, 0 texture { gradient y scale 4 texture_map { [0 T] [1 T] } } }\n\
+         plane { z, 0 texture { gradient y texture_map { [0 T] [1 T] } scale 4 } }",
+    );
+    let grey = |object: usize, x: f64| {
+        let t = s.objects[object].texture.as_ref().expect("texture");
+        let layers = texture_layers(t, DVec3::new(x, 0.3, 0.0));
+        layers.iter().next().expect("a layer").colour.rgb.x
+    };
+    for x in [0.5, 1.0, 2.0, 3.0] {
+        assert!((grey(0, x) - x / 4.0).abs() < 1e-9, "{x}: {}", grey(0, x));
+        assert!((grey(0, x) - grey(1, x)).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn slope_reads_the_normal_and_the_altitude() {
+    use penumbra::geometry::TexturePoint;
+    let s = load(
+        "#version 3.7;\nsphere { 0, 1 pigment { slope { y*3 altitude y, -1, 1 } color_map { [0 rgb 0] [1 rgb 1] } } }",
+    );
+    let t = s.objects[0].texture.as_ref().expect("texture");
+    let at = |n: DVec3, y: f64| {
+        let p = TexturePoint {
+            world: DVec3::new(0.0, y, 0.0),
+            uv: glam::DVec2::ZERO,
+            normal: n,
+        };
+        texture_layers(t, p)
+            .iter()
+            .next()
+            .expect("a layer")
+            .colour
+            .rgb
+            .x
+    };
+    // POV-Ray: (3 (0.5 + asin(n.y) / pi) + (y + 1) / 2) / 4.
+    let n = DVec3::new(0.6, 0.8, 0.0);
+    let expected = (3.0 * (0.5 + 0.8f64.asin() / std::f64::consts::PI) + 0.75) / 4.0;
+    assert!((at(n, 0.5) - expected).abs() < 1e-9, "{}", at(n, 0.5));
+    assert!((at(DVec3::Y, 0.0) - (3.0 + 0.5) / 4.0).abs() < 1e-9);
+}

@@ -67,9 +67,10 @@ impl Evaluator<'_> {
             (None, Some("png")) => "png",
             (None, Some("pgm")) => "pgm",
             (None, Some("ppm")) => "ppm",
+            (None, Some("jpg" | "jpeg")) => "jpeg",
             (None, _) => "other",
         };
-        if !matches!(format, "png" | "pgm" | "ppm") {
+        if !matches!(format, "png" | "pgm" | "ppm" | "jpeg") {
             let what = format!("{format} images in a height_field");
             let at = at.unwrap_or(Token {
                 kind: TokenKind::Str(""),
@@ -203,9 +204,32 @@ fn load_heights(path: &Path, format: &str) -> Result<Heights, String> {
         std::fs::read(path).map_err(|e| format!("cannot read \"{}\": {e}", path.display()))?;
     let r = match format {
         "png" => png_heights(&bytes),
+        "jpeg" => jpeg_heights(&bytes),
         _ => netpbm_heights(&bytes),
     };
     r.map_err(|e| format!("cannot read \"{}\": {e}", path.display()))
+}
+
+/// A JPEG's 8-bit samples: grey as v / 255, colour as the PNG rule for 8-bit colour
+/// ((256 r + g) / 65535, which for grey content is the same v / 255; examples'
+/// slopemt_dat_37.jpg is such a colour-coded grey image).
+fn jpeg_heights(bytes: &[u8]) -> Result<Heights, String> {
+    let image = image::load_from_memory_with_format(bytes, image::ImageFormat::Jpeg)
+        .map_err(|e| e.to_string())?;
+    let (w, h) = (image.width() as usize, image.height() as usize);
+    let values = match image {
+        image::DynamicImage::ImageLuma8(g) => g.pixels().map(|p| f32::from(p[0]) / 255.0).collect(),
+        other => other
+            .to_rgb8()
+            .pixels()
+            .map(|p| ((256.0 * f64::from(p[0]) + f64::from(p[1])) / 65535.0) as f32)
+            .collect(),
+    };
+    Ok(Heights {
+        width: w,
+        height: h,
+        values,
+    })
 }
 
 fn png_heights(bytes: &[u8]) -> Result<Heights, String> {

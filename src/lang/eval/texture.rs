@@ -1480,10 +1480,11 @@ impl Evaluator<'_> {
                         .map
                         .as_ref()
                         .is_some_and(|m| matches!(m.pattern.kind, PatternKind::Average));
-                    let entries = self.texture_map_body(average)?;
+                    let mut entries = self.texture_map_body(average)?;
                     let Some(map) = &mut t.map else {
                         return Err(self.err(tok.span, "`texture_map` needs a pattern before it"));
                     };
+                    transform_late_entries(&mut entries, &map.transform);
                     map.entries = entries;
                 }
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
@@ -1570,9 +1571,22 @@ impl Evaluator<'_> {
             entries.push((entries.len() as f64, self.default_texture.clone()));
         }
         if let Some(map) = &mut t.map {
+            transform_late_entries(&mut entries, &map.transform);
             map.entries = entries;
         }
         Ok(())
+    }
+}
+
+/// Entries read after transforms of their texture get those transforms too: POV-Ray
+/// transforms a texture map's entries with the whole texture whatever the order
+/// (measured: `texture { gradient y scale 4 texture_map { [0 T] [1 T] } }` with T a
+/// `gradient x` repeats T every 4 units, as with the scale after the map).
+fn transform_late_entries(entries: &mut [(f64, Texture)], since_pattern: &Transform) {
+    if *since_pattern != Transform::IDENTITY {
+        for (_, e) in entries {
+            e.transform_by(since_pattern);
+        }
     }
 }
 
