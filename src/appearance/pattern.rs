@@ -96,6 +96,7 @@ pub fn list_index(kind: &PatternKind, p: DVec3) -> usize {
         }
         PatternKind::Hexagon => hexagon(p),
         PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
+        PatternKind::MaterialMap(m) => super::pigment::material_index(m, p),
         _ => 0,
     }
 }
@@ -198,6 +199,7 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
     match &pattern.kind {
         PatternKind::Gradient(g) => gradient_value(p.dot(*g)),
         PatternKind::Slope(slope) => slope_value(slope, p, DVec3::ZERO),
+        PatternKind::MaterialMap(m) => super::pigment::material_index(m, p) as f64,
         // Measured: values above 1 wrap as gradient's do (1.25 and 10.25 read 0.25, 1 stays
         // 1), and -0.25 reads 0.75.
         PatternKind::Function(f) => gradient_value(f.at(p)),

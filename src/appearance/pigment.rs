@@ -93,20 +93,7 @@ pub fn image_colour(im: &ImageMap, p: DVec3) -> Colour {
     if w == 0 || h == 0 || im.image.pixels.len() < w * h || !p.is_finite() {
         return Colour::BLACK;
     }
-    let (u, v) = match im.map_type {
-        MapType::Planar => (p.x, p.y),
-        MapType::Spherical => {
-            let len = p.length();
-            if len == 0.0 {
-                (0.0, 0.5)
-            } else {
-                let u = (p.z.atan2(p.x) / TAU).rem_euclid(1.0);
-                let v = (p.y / len).clamp(-1.0, 1.0).asin() / PI + 0.5;
-                (u, v)
-            }
-        }
-        MapType::Cylindrical => ((p.z.atan2(p.x) / TAU).rem_euclid(1.0), p.y),
-    };
+    let (u, v) = image_uv(im.map_type, p);
     if im.once && !((0.0..1.0).contains(&u) && (0.0..1.0).contains(&v)) {
         return Colour {
             rgb: DVec3::ZERO,
@@ -130,13 +117,60 @@ pub fn image_colour(im: &ImageMap, p: DVec3) -> Colour {
         let bottom = mix(&at(i, j + 1), &at(i + 1, j + 1), fx);
         mix(&top, &bottom, fy)
     } else {
-        let i = ((u * w as f64) as i64).min(w as i64 - 1);
-        let j = (((1.0 - v) * h as f64) as i64).min(h as i64 - 1);
-        at(i, j)
+        let (i, j) = nearest_pixel((u, v), (w, h));
+        at(i as i64, j as i64)
     };
     c.filter += im.filter_all;
     c.transmit += im.transmit_all;
     c
+}
+
+/// The texture a material_map picks at a pattern-space point from the number of the pixel
+/// an image_map would show there. Measured with 3, 4 and 8 textures over the numbers 0 to
+/// 11: a number below the count picks its texture, the count itself picks the last, and a
+/// larger number picks itself mod the count (with 3: 0 1 2 2 1 2 0 1 2 0 1 2). Outside a
+/// `once` image, the first texture.
+pub fn material_index(m: &crate::scene::MaterialImage, p: DVec3) -> usize {
+    let (w, h) = (m.image.width, m.image.height);
+    if w == 0 || h == 0 || m.image.index.len() < w * h || !p.is_finite() || m.count == 0 {
+        return 0;
+    }
+    let (u, v) = image_uv(m.map_type, p);
+    if m.once && !((0.0..1.0).contains(&u) && (0.0..1.0).contains(&v)) {
+        return 0;
+    }
+    let (i, j) = nearest_pixel((u.rem_euclid(1.0), v.rem_euclid(1.0)), (w, h));
+    let n = usize::from(m.image.index[j * w + i]);
+    match n.cmp(&m.count) {
+        std::cmp::Ordering::Less => n,
+        std::cmp::Ordering::Equal => m.count - 1,
+        std::cmp::Ordering::Greater => n % m.count,
+    }
+}
+
+/// Column floor(u W) and row floor((1 - v) H) for (u, v) in [0, 1).
+fn nearest_pixel((u, v): (f64, f64), (w, h): (usize, usize)) -> (usize, usize) {
+    let i = ((u * w as f64) as usize).min(w - 1);
+    let j = (((1.0 - v) * h as f64) as usize).min(h - 1);
+    (i, j)
+}
+
+/// An image's (u, v) at a pattern-space point, for its map type.
+fn image_uv(map_type: MapType, p: DVec3) -> (f64, f64) {
+    match map_type {
+        MapType::Planar => (p.x, p.y),
+        MapType::Spherical => {
+            let len = p.length();
+            if len == 0.0 {
+                (0.0, 0.5)
+            } else {
+                let u = (p.z.atan2(p.x) / TAU).rem_euclid(1.0);
+                let v = (p.y / len).clamp(-1.0, 1.0).asin() / PI + 0.5;
+                (u, v)
+            }
+        }
+        MapType::Cylindrical => ((p.z.atan2(p.x) / TAU).rem_euclid(1.0), p.y),
+    }
 }
 
 #[cfg(test)]
@@ -187,5 +221,33 @@ mod tests {
             evaluate_pigment(&pig, DVec3::new(0.7, 0.0, 0.0)),
             Colour::BLACK
         );
+    }
+}
+
+#[cfg(test)]
+mod material_map_tests {
+    use super::*;
+    use crate::scene::{IndexImage, MaterialImage};
+
+    #[test]
+    fn numbers_pick_textures_as_povray_does() {
+        let image = IndexImage {
+            width: 12,
+            height: 1,
+            index: (0..12).collect(),
+        };
+        let m = MaterialImage {
+            image: std::sync::Arc::new(image),
+            map_type: MapType::Planar,
+            once: false,
+            count: 3,
+        };
+        let picks: Vec<usize> = (0..12)
+            .map(|i| material_index(&m, DVec3::new((i as f64 + 0.5) / 12.0, 0.5, 0.0)))
+            .collect();
+        // Measured with POV-Ray 3.7 (3 textures over the numbers 0 to 11).
+        assert_eq!(picks, [0, 1, 2, 2, 1, 2, 0, 1, 2, 0, 1, 2]);
+        let once = MaterialImage { once: true, ..m };
+        assert_eq!(material_index(&once, DVec3::new(1.5, 0.5, 0.0)), 0);
     }
 }

@@ -32,9 +32,9 @@ pub use spline::{
 };
 pub use texture::{
     BlackHole, Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap,
-    Interior, Irid, MapType, MappingKind, MappingWarp, Normal, Orientation, Pattern, PatternKind,
-    Pigment, PigmentKind, Quilted, Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap,
-    Turbulence, VoxelGrid, Warp, Wave,
+    IndexImage, Interior, Irid, MapType, MappingKind, MappingWarp, MaterialImage, Normal,
+    Orientation, Pattern, PatternKind, Pigment, PigmentKind, Quilted, Reflection, RepeatWarp,
+    Slope, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
 };
 
 use glam::DVec3;

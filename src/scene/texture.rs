@@ -224,6 +224,9 @@ pub enum PatternKind {
     /// `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }`: how far the surface's normal
     /// turns towards d, optionally mixed with the height along a (src/appearance/pattern.rs).
     Slope(Slope),
+    /// `material_map { png "file" texture {...} ... }`: the texture whose number the
+    /// image's pixel holds (a list pattern over the textures).
+    MaterialMap(MaterialImage),
     /// `image_pattern { png "file" }`: the image's grey (0.297 r + 0.589 g + 0.114 b) or,
     /// with `use_alpha`, its transparency.
     ImagePattern {
@@ -246,6 +249,7 @@ impl PatternKind {
         match self {
             PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
             PatternKind::Hexagon => Some(3),
+            PatternKind::MaterialMap(m) => Some(m.count),
             _ => None,
         }
     }
@@ -449,6 +453,25 @@ pub struct ImageData {
     pub width: usize,
     pub height: usize,
     pub pixels: Vec<Colour>,
+}
+
+/// An image's pixels as numbers: a palette image's indices, or an 8-bit colour image's red
+/// byte (POV-Ray's material_map reads them so; measured).
+#[derive(Debug, PartialEq)]
+pub struct IndexImage {
+    pub width: usize,
+    pub height: usize,
+    pub index: Vec<u8>,
+}
+
+/// `material_map`'s image, mapped as an image_map is, and the number of its textures
+/// (which texture a pixel's number picks: `appearance::pigment::material_index`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaterialImage {
+    pub image: std::sync::Arc<IndexImage>,
+    pub map_type: MapType,
+    pub once: bool,
+    pub count: usize,
 }
 
 /// `image_map { png "file" map_type n interpolate n once filter all f transmit all t }`.

@@ -23,6 +23,7 @@ mod height_field;
 mod isosurface;
 mod items;
 mod keywords;
+mod material_map;
 mod media;
 mod meshes;
 mod objects;

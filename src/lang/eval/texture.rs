@@ -27,7 +27,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "tiling",
     "triangular",
     "object",
-    "material_map",
     "bump_map",
 ];
 
@@ -320,7 +319,7 @@ enum Modified<'a> {
 
 impl Evaluator<'_> {
     /// A pattern with the global `noise_generator` as its default.
-    fn new_pattern(&self, kind: PatternKind) -> Pattern {
+    pub(super) fn new_pattern(&self, kind: PatternKind) -> Pattern {
         let mut p = Pattern::new(kind);
         p.noise_generator = self.scene.settings.noise_generator;
         p
@@ -1508,7 +1507,11 @@ impl Evaluator<'_> {
                 "texture" if t.map.as_ref().is_some_and(|m| m.entries.is_empty()) => {
                     self.texture_list_entries(&mut t, &tok)?;
                 }
-                "material_map" | "image_map" => {
+                "material_map" => {
+                    self.next()?;
+                    t.map = Some(Box::new(self.material_map_body()?));
+                }
+                "image_map" => {
                     return Err(self.unsupported(&tok, &word));
                 }
                 w if t.map.is_some()
