@@ -24,6 +24,7 @@ mod isosurface;
 mod items;
 mod keywords;
 mod media;
+mod mesh_camera;
 mod meshes;
 mod objects;
 mod path_splines;
