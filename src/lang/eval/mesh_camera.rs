@@ -44,9 +44,10 @@ impl Evaluator<'_> {
             smooth: false,
         };
         let next = self.peek()?;
-        if !next.is_punct(Punct::RBrace)
-            && !matches!(next.ident(), Some("mesh" | "mesh2" | "smooth"))
-        {
+        let is_item = next.ident().is_some_and(|w| {
+            w == "smooth" || super::objects::is_object_keyword(w) || w == "object"
+        });
+        if !next.is_punct(Punct::RBrace) && !is_item {
             let d = self.float()?;
             if d > 0.0 {
                 rig.max_distance = Some(d);
@@ -77,6 +78,14 @@ impl Evaluator<'_> {
                         ));
                     }
                     rig.meshes.push(mesh);
+                }
+                Some(w) if super::objects::is_object_keyword(w) || w == "object" => {
+                    return Err(self.err(
+                        tok.span,
+                        format!(
+                            "mesh_camera: only mesh and mesh2 objects can be cameras, found `{w}`"
+                        ),
+                    ));
                 }
                 _ => return Err(self.stray_in_block(&tok, "the mesh_camera")),
             }
