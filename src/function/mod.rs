@@ -54,6 +54,9 @@ pub enum Body {
     Pigment(std::sync::Arc<Pigment>),
     /// `function { spline { ... } }`: called with t, it gives the spline's vector.
     Spline(std::sync::Arc<PathSpline>),
+    /// `function { transform { ... } }`: called with x, y, z, it gives the transformed point
+    /// (transforms.inc's `vtransform` macro).
+    Transform(std::sync::Arc<Transform>),
 }
 
 /// One function's code, with the side tables its operations index.

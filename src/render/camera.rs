@@ -127,6 +127,8 @@ fn wide(camera: &Camera, projection: Projection, x: f64, y: f64) -> Option<(DVec
         }
         Projection::Omnimax => (at, omnimax(dh, rh, uh, r.length() / u.length(), x, y)?),
         Projection::Perspective | Projection::Orthographic => (at, d + r * x + u * y),
+        // Mesh cameras shoot from their faces (src/render/mesh_camera.rs), not the screen.
+        Projection::Mesh => return None,
     })
 }
 

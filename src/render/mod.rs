@@ -8,6 +8,7 @@ pub mod fog;
 pub mod integrator;
 pub mod lights;
 pub mod media;
+pub mod mesh_camera;
 pub mod photons;
 pub mod prepared;
 pub mod sampler;
@@ -538,6 +539,9 @@ fn sample_camera_ray(
 ) -> Option<Ray> {
     sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
     let (u, v) = sampler.get_2d();
+    if let Some(mesh) = &scene.mesh_camera {
+        return mesh.ray((x, y, w, h), (u, v));
+    }
     let sx = (x as f64 + u) / w as f64 - 0.5;
     let sy = 0.5 - (y as f64 + v) / h as f64;
     sampler.set_dimension(layout.dimension(0, Purpose::Lens));

@@ -63,6 +63,10 @@ pub struct PreparedScene {
     pub materials: Vec<Material>,
     pub lights: Vec<PreparedLight>,
     pub camera: Camera,
+    /// A mesh camera's faces and side tables (src/render/mesh_camera.rs).
+    pub mesh_camera: Option<super::mesh_camera::MeshCameraRays>,
+    /// How far camera rays reach (a mesh camera's `max_distance`; else unbounded).
+    pub camera_reach: f64,
     pub background: Colour,
     pub sky_sphere: Option<SkySphere>,
     /// The fogs that apply (distance > 0).
@@ -133,6 +137,17 @@ impl PreparedScene {
             media: builder.media,
             lights: scene.lights.iter().map(PreparedLight::new).collect(),
             camera: scene.camera.clone(),
+            mesh_camera: scene
+                .camera
+                .mesh
+                .as_ref()
+                .map(super::mesh_camera::MeshCameraRays::new),
+            camera_reach: scene
+                .camera
+                .mesh
+                .as_ref()
+                .and_then(|m| m.rig.max_distance)
+                .unwrap_or(f64::INFINITY),
             background: scene.background,
             sky_sphere: scene.sky_sphere.clone(),
             fogs: scene

@@ -1,4 +1,6 @@
-use glam::DVec3;
+use std::sync::Arc;
+
+use glam::{DVec2, DVec3};
 
 use super::{Normal, Transform};
 
@@ -18,6 +20,106 @@ pub struct Camera {
     pub angles: (f64, f64),
     /// `normal { }`: tilts every primary ray's direction (src/render/camera.rs).
     pub normal: Option<Normal>,
+    /// `mesh_camera { }` (with `Projection::Mesh`): rays from the faces of meshes
+    /// (src/render/mesh_camera.rs).
+    pub mesh: Option<MeshView>,
+}
+
+/// A mesh camera as the scene wrote it, with `location` and `direction` read the way POV-Ray
+/// reads them for this camera: only their z components count.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshView {
+    pub rig: Arc<MeshCamera>,
+    /// `location`'s z: how far along each face's normal the ray starts.
+    pub offset: f64,
+    /// `direction` with a negative z: the rays go against the faces' normals.
+    pub reverse: bool,
+}
+
+/// `mesh_camera { rays distribution [max_distance] mesh { } ... [smooth] }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshCamera {
+    pub rays_per_pixel: u32,
+    pub distribution: MeshDistribution,
+    /// Camera rays end here: beyond it they see the background (measured).
+    pub max_distance: Option<f64>,
+    /// In world space, in the order written.
+    pub meshes: Vec<CameraMesh>,
+    /// Interpolate the corner normals of smooth faces.
+    pub smooth: bool,
+}
+
+/// How pixels find their faces (POV-Ray's distribution types 0 to 3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MeshDistribution {
+    /// 0: ray r of a pixel from face `pixel` of mesh r; the pixel averages the rays shot.
+    PerMesh,
+    /// 1: the meshes' faces in one list, face `pixel` of it.
+    Summed,
+    /// 2: the image split into side-by-side columns, one per mesh.
+    SideBySide,
+    /// 3: the pixel's (u, v) found in the faces' uv triangles (texture baking).
+    UvMapped,
+}
+
+impl MeshDistribution {
+    pub fn from_number(n: f64) -> Option<MeshDistribution> {
+        Some(match n {
+            0.0 => MeshDistribution::PerMesh,
+            1.0 => MeshDistribution::Summed,
+            2.0 => MeshDistribution::SideBySide,
+            3.0 => MeshDistribution::UvMapped,
+            _ => return None,
+        })
+    }
+}
+
+/// One camera mesh's triangles, in world space.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CameraMesh {
+    pub faces: Vec<CameraFace>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraFace {
+    pub corners: [DVec3; 3],
+    /// Corner normals of a smooth face.
+    pub normals: Option<[DVec3; 3]>,
+    pub uvs: Option<[DVec2; 3]>,
+}
+
+impl CameraFace {
+    /// The face's own normal, (c - a) x (b - a) for corners a, b, c: the direction its rays
+    /// go with the default `direction` (measured with POV-Ray 3.7).
+    pub fn flat_normal(&self) -> DVec3 {
+        let [a, b, c] = self.corners;
+        (c - a).cross(b - a).normalize_or(DVec3::Z)
+    }
+
+    /// The point and normal at barycentric weights (wa, wb, wc).
+    pub fn at(&self, w: [f64; 3], smooth: bool) -> (DVec3, DVec3) {
+        let [a, b, c] = self.corners;
+        let p = a * w[0] + b * w[1] + c * w[2];
+        let flat = self.flat_normal();
+        let n = match self.normals.filter(|_| smooth) {
+            Some([na, nb, nc]) => {
+                let n = na * w[0] + nb * w[1] + nc * w[2];
+                // Corner normals point to either side; the face's own normal decides.
+                let n = n.normalize_or(flat);
+                if n.dot(flat) < 0.0 { -n } else { n }
+            }
+            None => flat,
+        };
+        (p, n)
+    }
+
+    fn transformed(&self, t: &Transform) -> CameraFace {
+        CameraFace {
+            corners: self.corners.map(|p| t.point(p)),
+            normals: self.normals.map(|ns| ns.map(|n| t.normal(n))),
+            uvs: self.uvs,
+        }
+    }
 }
 
 /// How screen points become rays (src/render/camera.rs has the formulas, measured with
@@ -36,6 +138,8 @@ pub enum Projection {
     Spherical,
     /// A 180-degree dome view whose lower part is cut off (measured; src/render/camera.rs).
     Omnimax,
+    /// `mesh_camera`: rays from mesh faces ([`Camera::mesh`]).
+    Mesh,
 }
 
 impl Projection {
@@ -94,6 +198,7 @@ pub struct CameraSpec {
     pub up_or_right_given: bool,
     pub transform: Transform,
     pub normal: Option<Normal>,
+    pub mesh: Option<Arc<MeshCamera>>,
 }
 
 impl Default for CameraSpec {
@@ -114,6 +219,7 @@ impl Default for CameraSpec {
             up_or_right_given: false,
             transform: Transform::IDENTITY,
             normal: None,
+            mesh: None,
         }
     }
 }
@@ -168,6 +274,24 @@ impl CameraSpec {
             }
         }
         let t = &self.transform;
+        let mesh = self.mesh.as_ref().map(|rig| MeshView {
+            rig: if t.is_identity() {
+                rig.clone()
+            } else {
+                Arc::new(MeshCamera {
+                    meshes: rig
+                        .meshes
+                        .iter()
+                        .map(|m| CameraMesh {
+                            faces: m.faces.iter().map(|f| f.transformed(t)).collect(),
+                        })
+                        .collect(),
+                    ..(**rig).clone()
+                })
+            },
+            offset: self.location.z,
+            reverse: self.direction.z < 0.0,
+        });
         Camera {
             location: t.point(self.location),
             direction: t.vector(direction),
@@ -178,6 +302,7 @@ impl CameraSpec {
             projection: self.projection,
             angles: self.projection.angles(self.angle, self.vertical_angle),
             normal: self.normal.clone(),
+            mesh,
         }
     }
 }

@@ -16,7 +16,9 @@ pub mod spline;
 pub mod text;
 mod texture;
 
-pub use camera::{Camera, CameraSpec, Projection};
+pub use camera::{
+    Camera, CameraFace, CameraMesh, CameraSpec, MeshCamera, MeshDistribution, MeshView, Projection,
+};
 pub use fog::{Fog, FogKind, FogTurbulence};
 pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, Light, LightKind};

@@ -91,7 +91,13 @@ pub fn render_reference(req: &ReferenceRequest) -> Result<Reference, StudyError>
     validate(req)?;
     let runner = PovrayRunner::new(req)?;
     let full = runner.render(req.supersample, &["-A"], None)?;
-    let half = runner.render(req.supersample / 2, &["-A"], None)?.image;
+    // k = 1 (a camera whose rays do not fill the pixel, like a mesh camera's): one ray per
+    // pixel is the converged image, and it stands in for its own k/2 render.
+    let half = if req.supersample == 1 {
+        full.image.clone()
+    } else {
+        runner.render(req.supersample / 2, &["-A"], None)?.image
+    };
     let povray_seconds = full.seconds;
     let full = full.image;
     Ok(Reference {
@@ -268,9 +274,9 @@ fn validate(req: &ReferenceRequest) -> Result<(), StudyError> {
         return invalid(format!("size {}x{} is empty", req.width, req.height));
     }
     let k = req.supersample;
-    if k < 2 || !k.is_multiple_of(2) || k > MAX_SUPERSAMPLE {
+    if k != 1 && (k < 2 || !k.is_multiple_of(2) || k > MAX_SUPERSAMPLE) {
         return invalid(format!(
-            "supersample {k} must be even, from 2 to {MAX_SUPERSAMPLE} (the k/2 render must exist)"
+            "supersample {k} must be 1 or even, from 2 to {MAX_SUPERSAMPLE} (the k/2 render must exist)"
         ));
     }
     if req.width.checked_mul(k).is_none() || req.height.checked_mul(k).is_none() {

@@ -120,8 +120,8 @@ impl Evaluator<'_> {
             ));
         }
         let body = self.function_after_keyword(span)?.body;
-        if let crate::function::Body::Spline(_) = body {
-            return Err(self.err(span, "a spline function gives a vector; a height field needs a float or pigment function"));
+        if let crate::function::Body::Spline(_) | crate::function::Body::Transform(_) = body {
+            return Err(self.err(span, "a spline or transform function gives a vector; a height field needs a float or pigment function"));
         }
         let (columns, rows) = (w as usize, h as usize);
         let heights = HeightField::sample(columns, rows, |i, j| {
@@ -136,7 +136,9 @@ impl Evaluator<'_> {
                     let c = crate::appearance::evaluate_pigment(pig, p).rgb;
                     0.297 * c.x + 0.589 * c.y + 0.114 * c.z
                 }
-                crate::function::Body::Spline(_) => unreachable!("refused above"),
+                crate::function::Body::Spline(_) | crate::function::Body::Transform(_) => {
+                    unreachable!("refused above")
+                }
             };
             if (0.0..=1.0).contains(&v) {
                 v

@@ -371,8 +371,9 @@ impl Evaluator<'_> {
                         spec.normal = ev.normal_body(spec.normal.take())?;
                     }
                     "mesh_camera" => {
-                        let word = word.to_string();
-                        ev.unsupported_or_skip(tok, &word)?;
+                        let rig = ev.mesh_camera_block(tok)?;
+                        spec.mesh = Some(super::mesh_camera::shared(rig));
+                        spec.projection = Projection::Mesh;
                     }
                     _ => {
                         if let Some(Value::Camera(c)) = ev.lookup(word).cloned() {

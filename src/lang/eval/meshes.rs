@@ -32,6 +32,17 @@ impl Evaluator<'_> {
     /// `texture` and `uv_vectors` are its own. Degenerate triangles are dropped silently,
     /// as POV-Ray does.
     pub(super) fn mesh_items(&mut self, kw: &Token) -> R<ObjectValue> {
+        // `mesh { Name ... }`: a declared mesh, as the mesh_camera scenes write it.
+        let first = self.peek()?;
+        if let Some(super::value::Value::Object(o)) =
+            first.ident().and_then(|w| self.lookup(w)).cloned()
+            && o.object
+                .as_ref()
+                .is_some_and(|x| matches!(x.shape, Shape::Mesh(_)))
+        {
+            self.next()?;
+            return Ok(*o);
+        }
         let mut mesh = Mesh::default();
         loop {
             let tok = self.peek()?;

@@ -25,6 +25,7 @@ mod items;
 mod keywords;
 mod material_map;
 mod media;
+mod mesh_camera;
 mod meshes;
 mod objects;
 mod path_splines;

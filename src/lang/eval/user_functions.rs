@@ -83,6 +83,10 @@ impl Evaluator<'_> {
                 tok.span,
                 "a spline function gives a vector; a float function is needed here",
             )),
+            Body::Transform(_) => Err(self.err(
+                tok.span,
+                "a transform function gives a vector; a float function is needed here",
+            )),
         }
     }
 
@@ -134,6 +138,11 @@ impl Evaluator<'_> {
             Some("spline") => {
                 let s = self.spline_value()?;
                 return Ok(Body::Spline(Arc::new(s)));
+            }
+            Some("transform") => {
+                self.next()?;
+                let t = self.transform_block()?;
+                return Ok(Body::Transform(Arc::new(t)));
             }
             Some("pattern") => {
                 self.next()?;
@@ -363,6 +372,10 @@ impl Evaluator<'_> {
                 let t = args.into_iter().next().expect("one argument");
                 Ok(Expr::Spline(s.clone(), c, Box::new(t)))
             }
+            Body::Transform(_) => Err(self.err(
+                tok.span,
+                format!("unsupported: the transform function `{name}` inside another function"),
+            )),
         }
     }
 
@@ -465,6 +478,10 @@ impl Evaluator<'_> {
                 Value::Colour([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit])
             }
             Body::Spline(s) => super::path_splines::spline_vector(s, args[0], None),
+            Body::Transform(t) => {
+                let at = glam::DVec3::new(args[0], args[1], args[2]);
+                Value::Vector(super::value::Vector::new3(t.point(at)))
+            }
         };
         Ok((v, span))
     }

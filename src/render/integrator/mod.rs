@@ -289,7 +289,13 @@ impl<'a> Integrator<'a> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
-        let hit = self.scene.world.intersect(ray, f64::INFINITY, path.skip);
+        // A mesh camera's `max_distance` ends the camera rays (src/render/mesh_camera.rs).
+        let reach = if path.level == 1 && path.bounces == 0 {
+            self.scene.camera_reach
+        } else {
+            f64::INFINITY
+        };
+        let hit = self.scene.world.intersect(ray, reach, path.skip);
         let seen = match &hit {
             Some(hit) => self.shade(&self.shading(ray, hit, path), sampler, counts),
             None => self.sky(ray.direction),
