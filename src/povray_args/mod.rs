@@ -405,7 +405,9 @@ impl Reader<'_> {
         };
         match option.setting {
             Setting::Input => s.input = Some(PathBuf::from(need(value)?)),
-            Setting::Output => s.output = Some(PathBuf::from(need(value)?)),
+            // POV-Ray's INI files leave the name empty for the default (the scene's own
+            // name), as advanced/benchmark/benchmark.ini does.
+            Setting::Output => s.output = (!value.is_empty()).then(|| PathBuf::from(value)),
             Setting::Width => s.width = positive(value)?,
             Setting::Height => s.height = positive(value)?,
             Setting::LibraryPath => s.library_paths.push(PathBuf::from(need(value)?)),

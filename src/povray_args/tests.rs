@@ -188,3 +188,12 @@ fn penumbras_own_options_mix_with_switches() {
     assert_eq!(s.allow_write, Some(PathBuf::from("out/")));
     assert_eq!(read("scene.pov").unwrap().allow_write, None);
 }
+
+#[test]
+fn an_empty_output_name_means_the_default() {
+    // advanced/benchmark/benchmark.ini writes `Output_File_Name=` for the scene's own name.
+    let files = MemoryFiles::default();
+    let text = "Output_File_Name=x.png\nOutput_File_Name=\nHigh_Reproducibility=off\n";
+    let s = parse_ini_text(Path::new("b.ini"), text, None, &files).unwrap();
+    assert_eq!(s.output, None);
+}
