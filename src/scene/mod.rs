@@ -33,10 +33,11 @@ pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
 };
 pub use texture::{
-    BlackHole, Crackle, Finish, Fractal, FractalColouring, FractalFormula, ImageData, ImageMap,
-    IndexImage, Interior, Irid, MapType, MappingKind, MappingWarp, MaterialImage, Normal,
-    Orientation, Pattern, PatternKind, Pigment, PigmentKind, Quilted, Reflection, RepeatWarp,
-    Slope, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp, Wave,
+    BlackHole, BumpMap, Crackle, Finish, Fractal, FractalColouring, FractalFormula, HeightImage,
+    ImageData, ImageMap, IndexImage, Interior, Irid, MapType, MappingKind, MappingWarp,
+    MaterialImage, Normal, Orientation, Pattern, PatternKind, Pigment, PigmentKind, Quilted,
+    Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp,
+    Wave,
 };
 
 use glam::DVec3;

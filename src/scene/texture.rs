@@ -224,6 +224,9 @@ pub enum PatternKind {
     /// `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }`: how far the surface's normal
     /// turns towards d, optionally mixed with the height along a (src/appearance/pattern.rs).
     Slope(Slope),
+    /// `bump_map { png "file" ... }` in a normal: heights from an image (it tilts the
+    /// normal itself: src/appearance/normal.rs; as a value, 0).
+    BumpMap(BumpMap),
     /// `material_map { png "file" texture {...} ... }`: the texture whose number the
     /// image's pixel holds (a list pattern over the textures).
     MaterialMap(MaterialImage),
@@ -462,6 +465,22 @@ pub struct IndexImage {
     pub width: usize,
     pub height: usize,
     pub index: Vec<u8>,
+}
+
+/// `bump_map`'s image as heights in [0, 1]: a grey PNG's value / max, a colour one's
+/// brightness, or with `use_index` a palette index / 255.
+#[derive(Debug, PartialEq)]
+pub struct HeightImage {
+    pub width: usize,
+    pub height: usize,
+    pub heights: Vec<f32>,
+}
+
+/// `bump_map { png "file" [once] [bump_size s] [use_index] }`, mapped onto the x-y plane.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BumpMap {
+    pub image: std::sync::Arc<HeightImage>,
+    pub once: bool,
 }
 
 /// `material_map`'s image, mapped as an image_map is, and the number of its textures

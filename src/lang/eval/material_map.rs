@@ -11,7 +11,9 @@ use super::super::syntax::Punct;
 use super::Evaluator;
 use super::value::Value;
 use crate::geometry::Transform;
-use crate::scene::{IndexImage, MapType, MaterialImage, PatternKind, TextureMap};
+use crate::scene::{
+    BumpMap, HeightImage, IndexImage, MapType, MaterialImage, Normal, PatternKind, TextureMap,
+};
 
 type R<T> = Result<T, Diagnostic>;
 
@@ -104,6 +106,113 @@ impl Evaluator<'_> {
             uv_mapping: false,
         })
     }
+}
+
+impl Evaluator<'_> {
+    /// After `bump_map` in a normal: `{ [png] "file" [once] [map_type 0] [interpolate 0]
+    /// [use_color] [bump_size s] }`, the x-y plane's heights (bump_size 1 unless given).
+    /// Other map types, interpolation and use_index are refused: not yet measured.
+    pub(super) fn bump_map_body(&mut self) -> R<Normal> {
+        let open = self.expect(Punct::LBrace, "after `bump_map`")?;
+        self.enter(open.span)?;
+        let r = self.bump_map_items();
+        self.leave();
+        let n = r?;
+        self.expect(Punct::RBrace, "to close the bump_map")?;
+        Ok(n)
+    }
+
+    fn bump_map_items(&mut self) -> R<Normal> {
+        let tok = self.peek()?;
+        if tok.is_ident("png") {
+            self.next()?;
+        } else if let Some(w) = tok.ident().filter(|w| {
+            matches!(
+                *w,
+                "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys"
+            )
+        }) {
+            let w = w.to_string();
+            return Err(self.unsupported(&tok, &format!("{w} images in a bump_map")));
+        }
+        let (v, span) = self.expr()?;
+        let Value::Str(name) = v else {
+            return Err(self.err(span, "expected the bump_map's image file name as a string"));
+        };
+        let Some(path) = self.resolve_include(&name) else {
+            return Err(self.err(span, format!("cannot find the bump_map image \"{name}\"")));
+        };
+        let (mut once, mut use_index, mut size) = (false, false, 1.0);
+        loop {
+            let tok = self.peek()?;
+            if tok.is_punct(Punct::RBrace) {
+                break;
+            }
+            match tok.ident() {
+                Some("once") => once = self.next().map(|_| true)?,
+                // Heights from palette indices do not match POV-Ray's yet (index / 255
+                // tilts far more than its render): refused until measured.
+                Some("use_index") => {
+                    return Err(self.unsupported(&tok, "use_index in a bump_map"));
+                }
+                Some("use_color" | "use_colour") => use_index = self.next().map(|_| false)?,
+                Some("bump_size") => {
+                    self.next()?;
+                    size = self.float()?;
+                }
+                Some(w @ ("map_type" | "interpolate")) => {
+                    let w = w.to_string();
+                    self.next()?;
+                    if self.float()? != 0.0 {
+                        return Err(self.unsupported(&tok, &format!("{w} in a bump_map")));
+                    }
+                }
+                _ => return Err(self.stray_in_block(&tok, "the bump_map")),
+            }
+        }
+        let image = load_heights(&path, use_index).map_err(|e| self.err(span, e))?;
+        let kind = PatternKind::BumpMap(BumpMap {
+            image: Arc::new(image),
+            once,
+        });
+        let mut normal = Normal::new(self.new_pattern(kind));
+        normal.amount = size;
+        Ok(normal)
+    }
+}
+
+/// A bump map's heights (`use_index`: palette indices / 255, not yet reachable), else grey / max or a
+/// colour's brightness (0.297 r + 0.589 g + 0.114 b), from the stored values.
+fn load_heights(path: &std::path::Path, use_index: bool) -> Result<HeightImage, String> {
+    if use_index {
+        let im = load_indices(path)?;
+        return Ok(HeightImage {
+            width: im.width,
+            height: im.height,
+            heights: im.index.iter().map(|&i| f32::from(i) / 255.0).collect(),
+        });
+    }
+    let img = image::open(path).map_err(|e| format!("cannot read \"{}\": {e}", path.display()))?;
+    let (width, height) = (img.width() as usize, img.height() as usize);
+    let heights = match img {
+        image::DynamicImage::ImageLuma8(g) => g.pixels().map(|p| f32::from(p[0]) / 255.0).collect(),
+        image::DynamicImage::ImageLuma16(g) => {
+            g.pixels().map(|p| f32::from(p[0]) / 65535.0).collect()
+        }
+        other => other
+            .to_rgb8()
+            .pixels()
+            .map(|p| {
+                (0.297 * f32::from(p[0]) + 0.589 * f32::from(p[1]) + 0.114 * f32::from(p[2]))
+                    / 255.0
+            })
+            .collect(),
+    };
+    Ok(HeightImage {
+        width,
+        height,
+        heights,
+    })
 }
 
 /// A PNG's pixels as numbers: palette indices as stored, or the red byte of 8-bit colour.

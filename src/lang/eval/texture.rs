@@ -27,7 +27,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "tiling",
     "triangular",
     "object",
-    "bump_map",
 ];
 
 /// Pattern keywords penumbra models.
@@ -1067,6 +1066,10 @@ impl Evaluator<'_> {
                         normal.normal_map = self.normal_list_entries(count)?;
                     }
                     n = Some(normal);
+                }
+                "bump_map" => {
+                    self.next()?;
+                    n = Some(self.bump_map_body()?);
                 }
                 "bump_size" => {
                     self.next()?;
