@@ -105,9 +105,11 @@ fn bump_map_normal(normal: &Normal, b: &crate::scene::BumpMap, q: DVec3, n: DVec
     if b.once && !((0.0..1.0).contains(&q.x) && (0.0..1.0).contains(&q.y)) {
         return n;
     }
-    let (u, v) = (q.x.rem_euclid(1.0), q.y.rem_euclid(1.0));
-    let i = ((u * w as f64) as i64).min(w - 1);
-    let j = (((1.0 - v) * h as f64) as i64).min(h - 1);
+    let (i, j) = super::pigment::nearest_pixel(
+        (q.x.rem_euclid(1.0), q.y.rem_euclid(1.0)),
+        (im.width, im.height),
+    );
+    let (i, j) = (i as i64, j as i64);
     let at =
         |i: i64, j: i64| f64::from(im.heights[(j.rem_euclid(h) * w + i.rem_euclid(w)) as usize]);
     let h0 = at(i, j);

@@ -149,7 +149,7 @@ pub fn material_index(m: &crate::scene::MaterialImage, p: DVec3) -> usize {
 }
 
 /// Column floor(u W) and row floor((1 - v) H) for (u, v) in [0, 1).
-fn nearest_pixel((u, v): (f64, f64), (w, h): (usize, usize)) -> (usize, usize) {
+pub(super) fn nearest_pixel((u, v): (f64, f64), (w, h): (usize, usize)) -> (usize, usize) {
     let i = ((u * w as f64) as usize).min(w - 1);
     let j = (((1.0 - v) * h as f64) as usize).min(h - 1);
     (i, j)

@@ -29,7 +29,9 @@ impl Evaluator<'_> {
         Ok(map)
     }
 
-    fn material_map_items(&mut self, at: Span) -> R<TextureMap> {
+    /// `[png] "file"` at the start of a material_map or bump_map: the file found through
+    /// the include path, and where its name was written.
+    fn png_file(&mut self, what: &str) -> R<(std::path::PathBuf, Span)> {
         let tok = self.peek()?;
         match tok.ident() {
             Some("png") => {
@@ -37,7 +39,7 @@ impl Evaluator<'_> {
             }
             Some(w @ ("gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys")) => {
                 let w = w.to_string();
-                return Err(self.unsupported(&tok, &format!("{w} images in a material_map")));
+                return Err(self.unsupported(&tok, &format!("{w} images in a {what}")));
             }
             _ => {}
         }
@@ -45,15 +47,17 @@ impl Evaluator<'_> {
         let Value::Str(name) = v else {
             return Err(self.err(
                 span,
-                "expected the material_map's image file name as a string",
+                format!("expected the {what}'s image file name as a string"),
             ));
         };
-        let Some(path) = self.resolve_include(&name) else {
-            return Err(self.err(
-                span,
-                format!("cannot find the material_map image \"{name}\""),
-            ));
-        };
+        match self.resolve_include(&name) {
+            Some(path) => Ok((path, span)),
+            None => Err(self.err(span, format!("cannot find the {what} image \"{name}\""))),
+        }
+    }
+
+    fn material_map_items(&mut self, at: Span) -> R<TextureMap> {
+        let (path, span) = self.png_file("material_map")?;
         let image = load_indices(&path).map_err(|e| self.err(span, e))?;
         let mut map_type = MapType::Planar;
         let mut once = false;
@@ -66,12 +70,7 @@ impl Evaluator<'_> {
             match tok.ident() {
                 Some("map_type") => {
                     self.next()?;
-                    map_type = match self.float()? as i64 {
-                        0 => MapType::Planar,
-                        1 => MapType::Spherical,
-                        2 => MapType::Cylindrical,
-                        _ => return Err(self.unsupported(&tok, "map_type other than 0, 1, 2")),
-                    };
+                    map_type = self.map_type_number(&tok)?;
                 }
                 Some("once") => {
                     self.next()?;
@@ -123,25 +122,7 @@ impl Evaluator<'_> {
     }
 
     fn bump_map_items(&mut self) -> R<Normal> {
-        let tok = self.peek()?;
-        if tok.is_ident("png") {
-            self.next()?;
-        } else if let Some(w) = tok.ident().filter(|w| {
-            matches!(
-                *w,
-                "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys"
-            )
-        }) {
-            let w = w.to_string();
-            return Err(self.unsupported(&tok, &format!("{w} images in a bump_map")));
-        }
-        let (v, span) = self.expr()?;
-        let Value::Str(name) = v else {
-            return Err(self.err(span, "expected the bump_map's image file name as a string"));
-        };
-        let Some(path) = self.resolve_include(&name) else {
-            return Err(self.err(span, format!("cannot find the bump_map image \"{name}\"")));
-        };
+        let (path, span) = self.png_file("bump_map")?;
         let (mut once, mut use_index, mut size) = (false, false, 1.0);
         loop {
             let tok = self.peek()?;
@@ -178,6 +159,15 @@ impl Evaluator<'_> {
         let mut normal = Normal::new(self.new_pattern(kind));
         normal.amount = size;
         Ok(normal)
+    }
+}
+
+impl Evaluator<'_> {
+    /// `map_type n` after the keyword `tok`.
+    fn map_type_number(&mut self, tok: &super::super::syntax::Token) -> R<MapType> {
+        let n = self.float()?;
+        super::texture::map_type_of(n)
+            .ok_or_else(|| self.unsupported(tok, "map_type other than 0, 1, 2"))
     }
 }
 

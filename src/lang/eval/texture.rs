@@ -1584,6 +1584,16 @@ impl Evaluator<'_> {
     }
 }
 
+/// An image's `map_type` number: the three POV-Ray types penumbra maps.
+pub(super) fn map_type_of(n: f64) -> Option<MapType> {
+    match n as i64 {
+        0 => Some(MapType::Planar),
+        1 => Some(MapType::Spherical),
+        2 => Some(MapType::Cylindrical),
+        _ => None,
+    }
+}
+
 /// Entries read after transforms of their texture get those transforms too: POV-Ray
 /// transforms a texture map's entries with the whole texture whatever the order
 /// (measured: `texture { gradient y scale 4 texture_map { [0 T] [1 T] } }` with T a
@@ -1757,14 +1767,8 @@ impl Evaluator<'_> {
                     Some("map_type") => {
                         self.next()?;
                         let (m, s) = self.expr()?;
-                        im.map_type = match self.to_float(&m, s)? as i64 {
-                            0 => MapType::Planar,
-                            1 => MapType::Spherical,
-                            2 => MapType::Cylindrical,
-                            _ => {
-                                return Err(self.unsupported(&tok, "map_type other than 0, 1, 2"));
-                            }
-                        };
+                        im.map_type = map_type_of(self.to_float(&m, s)?)
+                            .ok_or_else(|| self.unsupported(&tok, "map_type other than 0, 1, 2"))?;
                     }
                     Some("interpolate") => {
                         self.next()?;
