@@ -286,13 +286,13 @@ struct BenchArgs {
     /// Rays of each kind per count.
     #[arg(long, default_value_t = 200_000)]
     rays: usize,
-    /// Sphere counts for the side-by-side run against POV-Ray (rounded to cubes); `0`
-    /// skips it.
-    #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000])]
+    /// Sphere counts (N x N grids) for the whole pipeline against POV-Ray, time and peak
+    /// memory; `0` skips it.
+    #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000])]
     povray_counts: Vec<usize>,
-    #[arg(long, default_value_t = 320)]
+    #[arg(long, default_value_t = 640)]
     width: u32,
-    #[arg(long, default_value_t = 240)]
+    #[arg(long, default_value_t = 480)]
     height: u32,
     /// Only the parse section: the `#while` evaluation and the model's bytes per sphere
     /// against POV-Ray's parse time.
@@ -307,6 +307,10 @@ struct BenchArgs {
     /// Only the function line and the shape lines (rays per second against one shape).
     #[arg(long)]
     shapes: bool,
+    /// Only the whole-pipeline section (`--povray-counts`, `--width`, `--height`): the N x N
+    /// spheres scene rendered by penumbra and by POV-Ray, time and peak memory of each.
+    #[arg(long)]
+    pipeline: bool,
 }
 
 #[derive(clap::Args)]
@@ -798,6 +802,13 @@ fn bench(args: BenchArgs) -> Result<ExitCode, String> {
     }
     if args.shapes {
         penumbra::study::bench::shape_lines(args.rays, &mut |line| println!("{line}"));
+        return Ok(ExitCode::SUCCESS);
+    }
+    if args.pipeline {
+        let exe = std::env::current_exe().map_err(text)?;
+        let counts: Vec<usize> = args.povray_counts.into_iter().filter(|&n| n > 0).collect();
+        let size = (args.width, args.height);
+        penumbra::study::pipeline_bench::run(&counts, &exe, size, |line| println!("{line}"));
         return Ok(ExitCode::SUCCESS);
     }
     let options = penumbra::study::bench::BenchOptions {

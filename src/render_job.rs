@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 
 use crate::lang::{AnimationClock, Diagnostic, LoadOptions, load_scene_with};
-use crate::output::{BitDepth, Fnv, Image, ShardHeader, read_shard, write_image, write_shard};
+use crate::output::{BitDepth, Image, ShardHeader, read_shard, write_image, write_shard};
 use crate::povray_args::{Frame, Job};
 use crate::render::{Film, PreparedScene, Progress, RenderOptions, RenderStats};
 
@@ -292,7 +292,7 @@ impl FrameRenderer<'_> {
         let loaded = load_scene_with(&self.job.scene, &load, self.settings.skip_unsupported)
             .map_err(|d| d.to_string())?;
         self.progress.warnings(&loaded.warnings);
-        let key = scene_hash(&loaded.scene);
+        let key = loaded.inputs_hash;
         let rebuilt = self.prepared.as_ref().is_none_or(|(k, _)| *k != key);
         if rebuilt {
             self.prepared = Some((key, PreparedScene::new(&loaded.scene)));
@@ -426,20 +426,4 @@ pub fn crop(image: &Image, window: &crate::render::PixelWindow) -> Image {
         height: window.y.len(),
         pixels,
     }
-}
-
-/// A hash of everything the scene holds (through its Debug form, without building the
-/// text), so frames whose scene did not change keep their render-ready scene, and shards
-/// of different scenes are not merged. FNV-1a: the same on every machine and version.
-pub fn scene_hash(scene: &crate::scene::Scene) -> u64 {
-    struct HashWriter(Fnv);
-    impl std::fmt::Write for HashWriter {
-        fn write_str(&mut self, s: &str) -> std::fmt::Result {
-            self.0.write(s.as_bytes());
-            Ok(())
-        }
-    }
-    let mut w = HashWriter(Fnv::default());
-    let _ = std::fmt::write(&mut w, format_args!("{scene:?}"));
-    w.0.finish()
 }

@@ -178,18 +178,16 @@ fn degenerate_input_gives_finite_samples() {
         matte(0.5),
     ));
     scene.objects.push(object(
-        Shape::Triangle {
-            corners: [DVec3::ZERO, DVec3::X, DVec3::X * 2.0],
-        },
+        Shape::Triangle(Box::new([DVec3::ZERO, DVec3::X, DVec3::X * 2.0])),
         matte(0.5),
     ));
     scene.objects.push(object(
-        Shape::Cylinder {
+        Shape::Cylinder(Box::new(penumbra::scene::Cylinder {
             base: DVec3::ONE,
             cap: DVec3::ONE,
             radius: 1.0,
             open: false,
-        },
+        })),
         matte(0.5),
     ));
     // A light exactly on the floor.

@@ -38,6 +38,6 @@ pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData};
 pub use superellipsoid::Superellipsoid;
 pub use transform::Transform;
 pub use world::{
-    CsgOp, Hit, Item, MaterialBlend, Primitive, SurfacePoint, TexturePoint, World, WorldBuilder,
-    flags,
+    CsgOp, Hit, Item, MaterialBlend, PREPARED_BYTES_PER_PRIMITIVE, Primitive, SurfacePoint,
+    TexturePoint, World, WorldBuilder, flags,
 };

@@ -26,6 +26,13 @@ const NO_TRANSFORM: u32 = u32::MAX;
 /// Items (what the BVH and CSG nodes refer to) are primitives, or CSG nodes with this bit.
 const CSG_BIT: u32 = 1 << 31;
 
+/// What the render-ready scene takes per primitive at its peak (while its BVH is built):
+/// the primitive, its bounds and the tree's share. The scene language charges each object
+/// this much beside its own size against the memory budget, so the budget bounds the
+/// whole process, not only the scene model.
+pub const PREPARED_BYTES_PER_PRIMITIVE: usize =
+    size_of::<Primitive>() + size_of::<Aabb>() + super::bvh::BYTES_PER_ITEM;
+
 #[derive(Clone, Copy, Debug)]
 pub struct Primitive {
     pub shape: ShapeKind,
@@ -214,23 +221,35 @@ impl WorldBuilder {
             .filter(|b| b.is_finite() && !b.is_empty())
             .collect();
         let mut bounded = Vec::new();
-        let mut bounds = Vec::new();
         for item in &self.top {
             match world.item_bounds(item.0) {
-                Some(b) if b.is_finite() && !b.is_empty() => {
-                    bounded.push(item.0);
-                    bounds.push(b);
-                }
+                Some(b) if b.is_finite() && !b.is_empty() => bounded.push(item.0),
                 _ => world.unbounded.push(item.0),
             }
         }
-        let mut bvh = Bvh::build(&bounds);
+        // The bounds are computed again rather than kept: an array of them would be the
+        // build's largest after the primitives.
+        let bounds_of = |i: usize| world.item_bounds(bounded[i]).unwrap_or(Aabb::EMPTY);
+        let mut bvh = Bvh::build_from(bounded.len(), bounds_of);
         for item in &mut bvh.items {
             *item = bounded[*item as usize];
         }
+        drop(bounded);
         world.bvh = bvh;
         world.primitives_in_leaf_order();
         world
+    }
+}
+
+/// Moves each element `i` to `dest[i]` (a permutation), cycle by cycle, without a copy of
+/// the slice; `dest` ends as the identity.
+fn permute<T>(v: &mut [T], dest: &mut [u32]) {
+    for i in 0..v.len() {
+        while dest[i] as usize != i {
+            let j = dest[i] as usize;
+            v.swap(i, j);
+            dest.swap(i, j);
+        }
     }
 }
 
@@ -281,20 +300,19 @@ impl World {
     fn primitives_in_leaf_order(&mut self) {
         let n = self.primitives.len();
         let mut new_index = vec![u32::MAX; n];
-        let mut order = Vec::with_capacity(n);
+        let mut placed = 0u32;
         for &item in &self.bvh.items {
             if item & CSG_BIT == 0 && new_index[item as usize] == u32::MAX {
-                new_index[item as usize] = order.len() as u32;
-                order.push(item);
+                new_index[item as usize] = placed;
+                placed += 1;
             }
         }
-        for (i, slot) in new_index.iter_mut().enumerate() {
-            if *slot == u32::MAX {
-                *slot = order.len() as u32;
-                order.push(i as u32);
-            }
+        for slot in new_index.iter_mut().filter(|s| **s == u32::MAX) {
+            *slot = placed;
+            placed += 1;
         }
-        self.primitives = order.iter().map(|&i| self.primitives[i as usize]).collect();
+        // In place: a reordered copy would double the largest array at the peak.
+        permute(&mut self.primitives, &mut new_index.clone());
         let remap = |item: &mut u32| {
             if *item & CSG_BIT == 0 {
                 *item = new_index[*item as usize];
@@ -809,7 +827,10 @@ impl World {
     }
 
     pub fn bounds(&self) -> Aabb {
-        self.bvh.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
+        self.bvh
+            .nodes
+            .first()
+            .map_or(Aabb::EMPTY, |n| n.bounds.aabb())
     }
 }
 
@@ -979,5 +1000,16 @@ mod tests {
             }
         }
         assert!(ts.iter().all(|&t| (t - 4.0).abs() < 1e-9), "{:?}", &ts[..5]);
+    }
+
+    #[test]
+    fn permute_moves_each_element_to_its_place() {
+        // A permutation with cycles of lengths 1, 2 and 4.
+        let dest = [0u32, 2, 1, 4, 5, 6, 3];
+        let mut v: Vec<u32> = (0..7).collect();
+        permute(&mut v, &mut dest.to_vec());
+        for (i, &d) in dest.iter().enumerate() {
+            assert_eq!(v[d as usize], i as u32);
+        }
     }
 }

@@ -94,6 +94,9 @@ pub struct Loaded {
     pub warnings: Vec<Diagnostic>,
     /// Text from `#debug`, which POV-Ray prints on its debug stream; `check` prints it.
     pub debug: String,
+    /// A hash of what the scene was made from (its text, the files it read, the options it
+    /// saw): equal for equal scenes, cheap to compute (`eval::inputs`).
+    pub inputs_hash: u64,
 }
 
 /// Where include files come from. One place decides what can be read, and tests substitute
@@ -261,6 +264,7 @@ fn evaluate(
         scene,
         warnings: std::mem::take(&mut ev.warnings),
         debug: std::mem::take(&mut ev.debug_output),
+        inputs_hash: ev.inputs.hash(source, options, skip_unsupported, files),
     };
     Ok((loaded, values))
 }
@@ -293,19 +297,19 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Sphere { .. } => "sphere",
             crate::scene::Shape::Plane { .. } => "plane",
             crate::scene::Shape::Box { .. } => "box",
-            crate::scene::Shape::Cylinder { .. } => "cylinder",
-            crate::scene::Shape::Cone { .. } => "cone",
-            crate::scene::Shape::Disc { .. } => "disc",
+            crate::scene::Shape::Cylinder(_) => "cylinder",
+            crate::scene::Shape::Cone(_) => "cone",
+            crate::scene::Shape::Disc(_) => "disc",
             crate::scene::Shape::Torus { .. } => "torus",
-            crate::scene::Shape::Quadric { .. } => "quadric",
+            crate::scene::Shape::Quadric(_) => "quadric",
             crate::scene::Shape::Quartic { .. } => "quartic",
             crate::scene::Shape::Poly { .. } => "poly",
             crate::scene::Shape::Julia(_) => "julia_fractal",
             crate::scene::Shape::Superellipsoid { .. } => "superellipsoid",
             crate::scene::Shape::Blob(_) => "blob",
             crate::scene::Shape::Isosurface(_) => "isosurface",
-            crate::scene::Shape::Triangle { .. } => "triangle",
-            crate::scene::Shape::SmoothTriangle { .. } => "smooth_triangle",
+            crate::scene::Shape::Triangle(_) => "triangle",
+            crate::scene::Shape::SmoothTriangle(_) => "smooth_triangle",
             crate::scene::Shape::Mesh(_) => "mesh",
             crate::scene::Shape::HeightField(_) => "height_field",
             crate::scene::Shape::BicubicPatch(_) => "bicubic_patch",
@@ -320,7 +324,7 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Difference(_) => "difference",
         };
         *features.entry(name).or_default() += 1;
-        if !o.clipped_by.is_empty() {
+        if !o.clipped_by().is_empty() {
             *features.entry("clipped_by").or_default() += 1;
         }
         if o.interior.is_some() {
@@ -329,7 +333,7 @@ pub fn check_summary(loaded: &Loaded) -> String {
         for child in o.shape.children().unwrap_or(&[]) {
             visit(child, features);
         }
-        for clip in &o.clipped_by {
+        for clip in o.clipped_by() {
             visit(clip, features);
         }
     }

@@ -2,6 +2,8 @@
 //! transforms, CSG nodes and a BVH, each primitive pointing at its material, plus lights
 //! prepared for sampling.
 
+use std::sync::Arc;
+
 use glam::{DAffine3, DVec2, DVec3};
 
 use crate::appearance::may_transmit;
@@ -38,7 +40,8 @@ impl GammaDecode {
 
 #[derive(Clone, Debug)]
 pub struct Material {
-    pub texture: Texture,
+    /// Shared with the scene model and with every other material of the same texture.
+    pub texture: Arc<Texture>,
     pub double_illuminate: bool,
     /// Whether the texture lets light through anywhere (else shadow rays stop here).
     pub transmits: bool,
@@ -113,11 +116,12 @@ impl PreparedScene {
         let mut builder = Builder {
             world: WorldBuilder::default(),
             materials: Vec::new(),
+            shared: std::collections::HashMap::new(),
             interior_ids: std::collections::HashMap::new(),
             media: MediaTable::new(&scene.media),
             photons: scene.settings.photons.is_some(),
         };
-        let default_texture = Texture::default();
+        let default_texture = Arc::new(Texture::default());
         let default_interior = Interior::default();
         let looks = Looks {
             texture: &default_texture,
@@ -167,9 +171,52 @@ impl PreparedScene {
     }
 }
 
+/// The interior-owner key of the default interior that opaque primitives share.
+const OPAQUE_INTERIOR: usize = usize::MAX;
+
+/// What makes two primitives' materials the same. Their textures are compared by address
+/// (the evaluator already shares equal textures of consecutive objects). A primitive with
+/// the default interior that light can pass has one of its own, since a ray inside it must
+/// leave it at its own surface: it gets no key.
+#[derive(PartialEq, Eq, Hash)]
+struct MaterialKey {
+    texture: usize,
+    interior_texture: usize,
+    interior_owner: usize,
+    double_illuminate: bool,
+    hollow: bool,
+    light_group: Option<(u32, bool)>,
+    photons: crate::scene::ObjectPhotons,
+}
+
+impl MaterialKey {
+    fn of(looks: Looks<'_>) -> Option<MaterialKey> {
+        let opaque = looks.interior_texture.is_none() && !may_transmit(looks.texture);
+        let interior_owner = match looks.interior_owner {
+            Some(owner) => owner,
+            None if opaque => OPAQUE_INTERIOR,
+            None => return None,
+        };
+        let f = looks.flags;
+        Some(MaterialKey {
+            texture: Arc::as_ptr(looks.texture) as usize,
+            interior_texture: looks
+                .interior_texture
+                .map_or(0, |t| Arc::as_ptr(t) as usize),
+            interior_owner,
+            double_illuminate: f.double_illuminate,
+            hollow: f.hollow,
+            light_group: f.light_group.map(|g| (g.id, g.global_lights)),
+            photons: f.photons.unwrap_or_default(),
+        })
+    }
+}
+
 struct Builder {
     world: WorldBuilder,
     materials: Vec<Material>,
+    /// The materials primitives share, by what they hold.
+    shared: std::collections::HashMap<MaterialKey, u32>,
     /// Interior ids by owner (see Looks::interior_owner).
     interior_ids: std::collections::HashMap<usize, u32>,
     media: MediaTable,
@@ -257,8 +304,8 @@ fn blob_data(blob: &Blob, materials: &[u32]) -> Option<BlobData> {
 /// What a CSG child inherits from its parents: texture, interior and flags.
 #[derive(Clone, Copy)]
 struct Looks<'a> {
-    texture: &'a Texture,
-    interior_texture: Option<&'a Texture>,
+    texture: &'a Arc<Texture>,
+    interior_texture: Option<&'a Arc<Texture>>,
     interior: &'a Interior,
     /// The object whose `interior` this is (its address), or None for the default one,
     /// which every primitive has to itself.
@@ -271,20 +318,20 @@ impl Builder {
     /// each part. Returns the item for use as a CSG child.
     fn object(&mut self, object: &Object, inherited: Looks<'_>, top: bool) -> Option<Item> {
         let looks = Looks {
-            texture: object.texture.as_deref().unwrap_or(inherited.texture),
+            texture: object.texture.as_ref().unwrap_or(inherited.texture),
             interior_texture: object
                 .interior_texture
-                .as_deref()
+                .as_ref()
                 .or(inherited.interior_texture),
-            interior: object.interior.as_ref().unwrap_or(inherited.interior),
-            interior_owner: match &object.interior {
+            interior: object.interior.as_deref().unwrap_or(inherited.interior),
+            interior_owner: match object.interior.as_deref() {
                 Some(i) => Some(i as *const Interior as usize),
                 None => inherited.interior_owner,
             },
             flags: combine(object.flags, inherited.flags),
         };
         let f = looks.flags;
-        let clipped = !object.clipped_by.is_empty();
+        let clipped = !object.clipped_by().is_empty();
         let group_at_top = top && !f.inverse && !clipped;
         let item = match &object.shape {
             Shape::Union(children) if group_at_top => {
@@ -298,10 +345,8 @@ impl Builder {
             | Shape::Intersection(children)
             | Shape::Difference(children) => self.csg(&object.shape, children, looks)?,
             Shape::Mesh(mesh) => self.mesh(mesh, object, looks)?,
-            Shape::Triangle { corners } => self.triangle(*corners, None, object, looks)?,
-            Shape::SmoothTriangle { corners, normals } => {
-                self.triangle(*corners, Some(*normals), object, looks)?
-            }
+            Shape::Triangle(corners) => self.triangle(**corners, None, object, looks)?,
+            Shape::SmoothTriangle(t) => self.triangle(t.corners, Some(t.normals), object, looks)?,
             shape => self.primitive(shape, object, looks)?,
         };
         let item = if clipped {
@@ -309,7 +354,7 @@ impl Builder {
         } else {
             item
         };
-        let item = if object.bounded_by.is_empty() {
+        let item = if object.bounded_by().is_empty() {
             item
         } else {
             self.bounded(item, object, looks)
@@ -362,7 +407,7 @@ impl Builder {
         };
         let transform = match local {
             Some(frame) => frame.then(&object.transform),
-            None => object.transform,
+            None => *object.transform,
         };
         let material = self.material(looks);
         let uv = if looks.texture.uses_uv() {
@@ -452,7 +497,7 @@ impl Builder {
             flags: ObjectFlags::default(),
             ..looks
         };
-        for clip in &object.clipped_by {
+        for clip in object.clipped_by() {
             parts.extend(self.object(clip, clip_looks, false));
         }
         self.world.csg(CsgOp::Clip, parts, false)
@@ -465,23 +510,37 @@ impl Builder {
             flags: ObjectFlags::default(),
             ..looks
         };
-        for bound in &object.bounded_by {
+        for bound in object.bounded_by() {
             parts.extend(self.object(bound, bound_looks, false));
         }
         self.world.csg(CsgOp::Bound, parts, false)
     }
 
+    /// The material for `looks`: shared with every primitive of the same looks where that
+    /// is exact (see [`MaterialKey`]), so a million spheres of one texture hold one.
     fn material(&mut self, looks: Looks<'_>) -> u32 {
+        let key = MaterialKey::of(looks);
+        if let Some(&index) = key.as_ref().and_then(|k| self.shared.get(k)) {
+            return index;
+        }
+        let index = self.new_material(looks);
+        if let Some(key) = key {
+            self.shared.insert(key, index);
+        }
+        index
+    }
+
+    fn new_material(&mut self, looks: Looks<'_>) -> u32 {
         let interior = looks.interior;
         let next = self.interior_ids.len() as u32;
-        let interior_id = match looks.interior_owner {
-            Some(owner) => *self.interior_ids.entry(owner).or_insert(next),
-            None => {
-                // A default interior of its own: a key no address can take.
-                let key = usize::MAX - self.materials.len();
-                *self.interior_ids.entry(key).or_insert(next)
-            }
+        let owner = match looks.interior_owner {
+            Some(owner) => owner,
+            // Opaque and with nothing inside: no ray enters, so all share one interior.
+            None if MaterialKey::of(looks).is_some() => OPAQUE_INTERIOR,
+            // A default interior of its own: a key no address can take.
+            None => OPAQUE_INTERIOR - 1 - self.materials.len(),
         };
+        let interior_id = *self.interior_ids.entry(owner).or_insert(next);
         self.media.add_interior(interior_id, &interior.media);
         let photons = looks.flags.photons.unwrap_or_default();
         // POV-Ray's shadow rays stop at a target that refracts photons: the photons bring
@@ -562,48 +621,35 @@ impl Builder {
                 },
                 None,
             ),
-            Shape::Cylinder {
-                base,
-                cap,
-                radius,
-                open,
-            } => (
+            Shape::Cylinder(ref c) => (
                 ShapeKind::Cone {
-                    r0: radius,
-                    r1: radius,
-                    open,
+                    r0: c.radius,
+                    r1: c.radius,
+                    open: c.open,
                 },
-                Some(axis_frame(base, cap)?),
+                Some(axis_frame(c.base, c.cap)?),
             ),
-            Shape::Cone {
-                base,
-                base_radius,
-                cap,
-                cap_radius,
-                open,
-            } => (
+            Shape::Cone(ref c) => (
                 ShapeKind::Cone {
-                    r0: base_radius,
-                    r1: cap_radius,
-                    open,
+                    r0: c.base_radius,
+                    r1: c.cap_radius,
+                    open: c.open,
                 },
-                Some(axis_frame(base, cap)?),
+                Some(axis_frame(c.base, c.cap)?),
             ),
-            Shape::Disc {
-                center,
-                normal,
-                radius,
-                hole_radius,
-            } => (
+            Shape::Disc(ref d) => (
                 ShapeKind::Disc {
-                    radius,
-                    hole: hole_radius,
+                    radius: d.radius,
+                    hole: d.hole_radius,
                 },
-                Some(axis_frame(center, center + normal.normalize_or(DVec3::Y))?),
+                Some(axis_frame(
+                    d.center,
+                    d.center + d.normal.normalize_or(DVec3::Y),
+                )?),
             ),
             Shape::Torus { major, minor } => (ShapeKind::Torus { major, minor }, None),
-            Shape::Quadric { coefficients } => {
-                self.world.tables.quadrics.push(coefficients);
+            Shape::Quadric(ref coefficients) => {
+                self.world.tables.quadrics.push(**coefficients);
                 (
                     ShapeKind::Quadric((self.world.tables.quadrics.len() - 1) as u32),
                     None,
@@ -626,8 +672,8 @@ impl Builder {
                 return self.field_shape(shape);
             }
             Shape::HeightField(_) => (self.grid_shape(shape)?, None),
-            Shape::Triangle { .. }
-            | Shape::SmoothTriangle { .. }
+            Shape::Triangle(_)
+            | Shape::SmoothTriangle(_)
             | Shape::Blob(_)
             | Shape::BicubicPatch(_)
             | Shape::Mesh(_)

@@ -24,8 +24,9 @@ pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, Light, LightKind};
 pub use media::{Media, MediaSampling, Phase, Scattering};
 pub use object::{
-    BicubicPatch, Blob, BlobComponent, BlobComponentKind, Glyph, HeightField, Isosurface, Lathe,
-    LightGroup, Mesh, MeshFace, Object, ObjectFlags, Prism, Shape, Sor,
+    BicubicPatch, Blob, BlobComponent, BlobComponentKind, Clipping, Cone, Cylinder, Disc, Glyph,
+    HeightField, Isosurface, Lathe, LightGroup, Mesh, MeshFace, Object, ObjectFlags, Placement,
+    Prism, Shape, SmoothTriangle, Sor,
 };
 pub use photons::{LightPhotons, ObjectPhotons, PhotonSettings};
 pub use radiosity::{GREY_WEIGHTS, Radiosity, RadiosityCache};

@@ -52,7 +52,7 @@ impl Default for PhotonSettings {
 }
 
 /// An object's `photons { ... }` block (inherited by a CSG's children).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct ObjectPhotons {
     /// `target [spacing multiplier]`: photons are shot at it.
     pub target: bool,

@@ -5,20 +5,15 @@
 //!   time per ray from the smallest to the largest scene (a BVH should keep it near log n;
 //!   the target is at most 3x from 1e3 to 1e6).
 //! - BVH build time (parallel and sequential) and memory per object.
-//! - The same kind of scene written with `#while` as a POV-Ray file, rendered by POV-Ray
-//!   (`-A`, no anti-aliasing) and by penumbra (1 sample per pixel) side by side at the same
-//!   size with a point light: the wall-time ratio penumbra / POV-Ray, parse included.
+//! - The whole pipeline against POV-Ray on a `#while` scene of spheres, time and peak
+//!   memory of both processes side by side (`pipeline_bench`).
 
 use std::fmt::Write as _;
-use std::path::Path;
-use std::process::Command;
 use std::time::Instant;
 
 use glam::DVec3;
 
 use crate::geometry::{Ray, ShapeKind, Transform, World, WorldBuilder};
-
-use super::tempdir::TempDir;
 
 /// What to measure.
 #[derive(Clone, Debug)]
@@ -461,78 +456,6 @@ fn trace(world: &World, rays: usize) -> RayFigures {
     }
 }
 
-/// The POV-Ray scene: a side^3 grid of spheres, jittered by POV-Ray-independent arithmetic
-/// (no `rand`, so both renderers read exactly the same geometry).
-fn while_scene(side: usize) -> String {
-    let r = 0.35 / side as f64;
-    format!(
-        "// {n} spheres made with #while, for penumbra bench.\n\
-         #version 3.7;\n\
-         global_settings {{ assumed_gamma 1.0 }}\n\
-         camera {{ location <0, 0, -4> look_at <0, 0, 0> right x*image_width/image_height angle 50 }}\n\
-         light_source {{ <3, 5, -4> color rgb 1 }}\n\
-         #declare S = {side};\n\
-         #declare I = 0;\n\
-         #while (I < S)\n\
-           #declare J = 0;\n\
-           #while (J < S)\n\
-             #declare K = 0;\n\
-             #while (K < S)\n\
-               sphere {{ <(I + 0.5) / S * 2 - 1 + 0.3 / S * sin(7 * J + K),\n\
-                         (J + 0.5) / S * 2 - 1 + 0.3 / S * sin(5 * K + I),\n\
-                         (K + 0.5) / S * 2 - 1>, {r}\n\
-                 pigment {{ color rgb <0.9, 0.5, 0.3> }} }}\n\
-               #declare K = K + 1;\n\
-             #end\n\
-             #declare J = J + 1;\n\
-           #end\n\
-           #declare I = I + 1;\n\
-         #end\n",
-        n = side * side * side,
-    )
-}
-
-fn wall_time(cmd: &mut Command) -> Result<f64, String> {
-    let start = Instant::now();
-    let out = cmd
-        .output()
-        .map_err(|e| format!("cannot run {:?}: {e}", cmd.get_program()))?;
-    let elapsed = start.elapsed().as_secs_f64();
-    if !out.status.success() {
-        return Err(format!(
-            "{:?} failed: {}",
-            cmd.get_program(),
-            String::from_utf8_lossy(&out.stderr)
-                .lines()
-                .last()
-                .unwrap_or("")
-        ));
-    }
-    Ok(elapsed)
-}
-
-fn side_by_side(side: usize, options: &BenchOptions, dir: &Path) -> Result<(f64, f64), String> {
-    let scene = dir.join(format!("spheres_{side}.pov"));
-    std::fs::write(&scene, while_scene(side)).map_err(|e| e.to_string())?;
-    let (w, h) = (options.width.to_string(), options.height.to_string());
-    let pov = wall_time(
-        Command::new("povray")
-            .arg(format!("+I{}", scene.display()))
-            .arg(format!("+O{}", dir.join("pov.png").display()))
-            .args([format!("+W{w}"), format!("+H{h}"), "-A".into(), "-D".into()])
-            .args(["-V", "-GA"]),
-    )?;
-    let ours = wall_time(
-        Command::new(&options.penumbra)
-            .arg("render")
-            .arg(&scene)
-            .arg("-o")
-            .arg(dir.join("penumbra.png"))
-            .args(["--width", &w, "--height", &h, "--spp", "1", "-q"]),
-    )?;
-    Ok((ours, pov))
-}
-
 /// The function line and a line per shape, beside one sphere.
 pub fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
     let (best, median) = function_rate();
@@ -633,30 +556,13 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
     shape_lines(options.rays, &mut line);
     text_lines(options.rays).into_iter().for_each(&mut line);
     triangle_lines(options, &mut line);
-    if options.povray_counts.is_empty() {
-        return report;
-    }
-    let dir = match TempDir::new("bench") {
-        Ok(d) => d,
-        Err(e) => {
-            line(format!("side by side skipped: no temp dir ({e})"));
-            return report;
-        }
-    };
-    line(format!(
-        "side by side, {}x{}, point light, parse included, all cores: penumbra 1 spp vs povray -A",
-        options.width, options.height
-    ));
-    for &n in &options.povray_counts {
-        let side = (n as f64).cbrt().round().max(1.0) as usize;
-        match side_by_side(side, options, dir.path()) {
-            Ok((ours, pov)) => line(format!(
-                "{:>9} spheres (#while): penumbra {ours:.2} s, POV-Ray {pov:.2} s, ratio {:.2}",
-                side * side * side,
-                ours / pov
-            )),
-            Err(e) => line(format!("{:>9} spheres: skipped: {e}", side * side * side)),
-        }
+    if !options.povray_counts.is_empty() {
+        super::pipeline_bench::run(
+            &options.povray_counts,
+            &options.penumbra,
+            (options.width, options.height),
+            &mut line,
+        );
     }
     let _ = writeln!(report);
     report

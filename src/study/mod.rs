@@ -11,6 +11,7 @@ pub mod distribution;
 pub mod media_quadrature;
 pub mod metrics;
 pub mod parse_bench;
+pub mod pipeline_bench;
 pub mod reference;
 mod tempdir;
 

@@ -11,6 +11,12 @@ use super::super::diagnostics::{Diagnostic, Span};
 use super::Evaluator;
 use super::stream::Cond;
 
+/// What a shape costs the process: its place in the scene model and, once the scene is
+/// prepared for rendering, its primitive and share of the BVH (the two are alive together
+/// while the render-ready scene is built).
+pub(super) const OBJECT_BYTES: usize =
+    size_of::<crate::scene::Object>() + crate::geometry::PREPARED_BYTES_PER_PRIMITIVE;
+
 /// Bytes the scene may take by default: the smaller of half the physical memory and the
 /// process's address-space limit (`ulimit -v`); 4 GiB when neither can be read.
 pub fn default_memory_budget() -> u64 {

@@ -85,6 +85,7 @@ impl Evaluator<'_> {
 
     fn open_for_reading(&mut self, name: &str, span: Span) -> R<DataFile> {
         let path = self.readable_data_file(name, span)?;
+        self.inputs.file(&path);
         let text = self
             .sources
             .read(&path)

@@ -854,6 +854,7 @@ impl Evaluator<'_> {
             .into_iter()
             .map(|d| d.join(name))
             .find(|p| self.sources.exists(p))
+            .inspect(|p| self.inputs.file(p))
     }
 
     /// The folders includes (and data files) are looked up in, in order.

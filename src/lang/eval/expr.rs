@@ -377,6 +377,9 @@ impl Evaluator<'_> {
         let span = tok.span;
         let constant = |f: f64| Some(Value::Float(f));
         let vec3 = |x: f64, y: f64, z: f64| Some(Value::Vector(Vector::new3(DVec3::new(x, y, z))));
+        if is_animation_identifier(name) {
+            self.inputs.read_clock.set(true);
+        }
         let value = match name {
             "pi" => constant(std::f64::consts::PI),
             "true" | "yes" | "on" => constant(1.0),
@@ -669,4 +672,19 @@ fn srgb_decode(v: f64) -> f64 {
     } else {
         ((v + 0.055) / 1.055).powf(2.4)
     }
+}
+
+/// The identifiers whose values change from frame to frame of an animation.
+fn is_animation_identifier(name: &str) -> bool {
+    matches!(
+        name,
+        "clock"
+            | "clock_delta"
+            | "clock_on"
+            | "frame_number"
+            | "initial_frame"
+            | "final_frame"
+            | "initial_clock"
+            | "final_clock"
+    )
 }

@@ -41,7 +41,7 @@ impl Evaluator<'_> {
             self.count_objects(1, hf.heights.len() * 4, kw.span)?;
             self.height_field_options(&mut hf)?;
             return Ok(Some(ObjectValue {
-                object: Some(Object::new(Shape::HeightField(hf))),
+                object: Some(Object::new(Shape::HeightField(Box::new(hf)))),
                 ..ObjectValue::default()
             }));
         }
@@ -98,7 +98,7 @@ impl Evaluator<'_> {
         let mut hf = from_image(image);
         self.height_field_options(&mut hf)?;
         Ok(Some(ObjectValue {
-            object: Some(Object::new(Shape::HeightField(hf))),
+            object: Some(Object::new(Shape::HeightField(Box::new(hf)))),
             ..ObjectValue::default()
         }))
     }

@@ -175,7 +175,7 @@ impl Evaluator<'_> {
                 self.material_body(&mut holder)?;
                 Value::Material(Box::new((
                     holder.texture.map(std::sync::Arc::unwrap_or_clone),
-                    holder.interior,
+                    holder.interior.map(|i| *i),
                 )))
             }
             "transform" => {

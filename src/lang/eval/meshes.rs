@@ -64,7 +64,7 @@ impl Evaluator<'_> {
         if mesh.faces.is_empty() {
             return Err(self.err(kw.span, "this mesh has no (non-degenerate) triangles"));
         }
-        Ok(shape(Shape::Mesh(mesh)))
+        Ok(shape(Shape::Mesh(Box::new(mesh))))
     }
 
     fn inside_vector(&mut self) -> R<DVec3> {
@@ -212,7 +212,7 @@ impl Evaluator<'_> {
             return Err(self.err(kw.span, "this mesh2 has no face_indices"));
         };
         self.mesh2_faces(&mut mesh, list, normal_indices, uv_indices, kw.span)?;
-        Ok(shape(Shape::Mesh(mesh)))
+        Ok(shape(Shape::Mesh(Box::new(mesh))))
     }
 
     /// Joins the index lists into faces, checks the implied pairings, drops degenerate

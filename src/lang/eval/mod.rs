@@ -20,6 +20,7 @@ mod fog;
 mod functions;
 pub use functions::builtins_markdown;
 mod height_field;
+mod inputs;
 mod isosurface;
 mod items;
 mod keywords;
@@ -113,6 +114,8 @@ pub struct Evaluator<'w> {
     /// Whether the `#version 3.8` warning was given (include files switch versions back and
     /// forth; once is enough).
     warned_version_3_8: bool,
+    /// What the scene was made from (its files and whether it read the clock).
+    pub inputs: inputs::Inputs,
 }
 
 impl<'w> Evaluator<'w> {
@@ -153,6 +156,7 @@ impl<'w> Evaluator<'w> {
             placements: placement::Placements::default(),
             light_groups: 0,
             warned_version_3_8: false,
+            inputs: inputs::Inputs::default(),
         }
     }
 

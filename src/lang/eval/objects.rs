@@ -10,7 +10,7 @@ use super::super::diagnostics::Diagnostic;
 use super::super::syntax::{Punct, Token};
 use super::Evaluator;
 use super::value::{ObjectValue, Value};
-use crate::scene::{Interior, Object, Shape, Transform};
+use crate::scene::{Cone, Cylinder, Disc, Interior, Object, Shape, SmoothTriangle, Transform};
 
 type R<T> = Result<T, Diagnostic>;
 
@@ -102,7 +102,7 @@ impl Evaluator<'_> {
         let word = kw.ident().unwrap_or("");
         let open = self.block_start(word)?;
         let what = the(&kw);
-        self.count_objects(1, std::mem::size_of::<Object>(), kw.span)?;
+        self.count_objects(1, super::budget::OBJECT_BYTES, kw.span)?;
         let read = match SHAPES.iter().find(|(name, _)| *name == word) {
             Some((_, reader)) => reader(self, &kw)?,
             None => self.object_reference()?,
@@ -170,12 +170,12 @@ impl Evaluator<'_> {
                 "degenerate cylinder: the base point equals the cap point",
             ));
         }
-        Ok(shape(Shape::Cylinder {
+        Ok(shape(Shape::Cylinder(Box::new(Cylinder {
             base,
             cap,
             radius,
             open: false,
-        }))
+        }))))
     }
 
     fn cone(&mut self, kw: &Token) -> R<ObjectValue> {
@@ -192,13 +192,13 @@ impl Evaluator<'_> {
                 "degenerate cone: the base point equals the cap point",
             ));
         }
-        Ok(shape(Shape::Cone {
+        Ok(shape(Shape::Cone(Box::new(Cone {
             base,
             base_radius,
             cap,
             cap_radius,
             open: false,
-        }))
+        }))))
     }
 
     fn disc(&mut self) -> R<ShapeRead> {
@@ -219,12 +219,12 @@ impl Evaluator<'_> {
             self.warn(s, "the disc's normal has zero length; the disc is left out");
             return Ok(ShapeRead::Dropped);
         }
-        kept(shape(Shape::Disc {
+        kept(shape(Shape::Disc(Box::new(Disc {
             center,
             normal: normal / len,
             radius,
             hole_radius,
-        }))
+        }))))
     }
 
     fn torus(&mut self) -> R<ObjectValue> {
@@ -242,11 +242,9 @@ impl Evaluator<'_> {
         let ghi = self.vector3()?;
         self.eat(Punct::Comma)?;
         let j = self.float()?;
-        Ok(shape(Shape::Quadric {
-            coefficients: [
-                abc.x, abc.y, abc.z, def.x, def.y, def.z, ghi.x, ghi.y, ghi.z, j,
-            ],
-        }))
+        Ok(shape(Shape::Quadric(Box::new([
+            abc.x, abc.y, abc.z, def.x, def.y, def.z, ghi.x, ghi.y, ghi.z, j,
+        ]))))
     }
 
     /// `quartic { <a0, ..., a34> }`: 35 coefficients, too many for a vector value.
@@ -272,13 +270,11 @@ impl Evaluator<'_> {
             return Ok(ShapeRead::Dropped);
         }
         kept(shape(match tri.normals {
-            Some(normals) => Shape::SmoothTriangle {
+            Some(normals) => Shape::SmoothTriangle(Box::new(SmoothTriangle {
                 corners: tri.corners,
                 normals,
-            },
-            None => Shape::Triangle {
-                corners: tri.corners,
-            },
+            })),
+            None => Shape::Triangle(Box::new(tri.corners)),
         }))
     }
 
@@ -413,7 +409,10 @@ impl Evaluator<'_> {
                 "clipped_by" => {
                     self.next()?;
                     let clips = self.object_list("clipped_by", "bounded_by", &bounds)?;
-                    object.clipped_by.extend(clips.iter().cloned());
+                    object
+                        .clipping_mut()
+                        .clipped_by
+                        .extend(clips.iter().cloned());
                     clipped = clips;
                     true
                 }
@@ -425,7 +424,7 @@ impl Evaluator<'_> {
                     self.next()?;
                     bounds = self.object_list("bounded_by", "clipped_by", &clipped)?;
                     if matches!(object.shape, Shape::Quartic { .. } | Shape::Poly { .. }) {
-                        object.bounded_by.clone_from(&bounds);
+                        object.clipping_mut().bounded_by.clone_from(&bounds);
                     }
                     true
                 }
@@ -469,8 +468,8 @@ impl Evaluator<'_> {
             })?,
             "interior" => {
                 self.next()?;
-                let base = object.interior.take().unwrap_or_default();
-                object.interior = Some(self.interior_body(base)?);
+                let base = object.interior.take().map(|i| *i).unwrap_or_default();
+                object.interior = Some(Box::new(self.interior_body(base)?));
             }
             "material" => {
                 self.next()?;
@@ -523,7 +522,8 @@ impl Evaluator<'_> {
             "open" => {
                 self.next()?;
                 match &mut object.shape {
-                    Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
+                    Shape::Cylinder(c) => c.open = true,
+                    Shape::Cone(c) => c.open = true,
                     Shape::Prism(prism) => prism.open = true,
                     Shape::Sor(sor) => sor.open = true,
                     _ => self.warn(
@@ -810,8 +810,8 @@ impl Evaluator<'_> {
                 }
                 Some("interior") => {
                     ev.next()?;
-                    let base = object.interior.take().unwrap_or_default();
-                    object.interior = Some(ev.interior_body(base)?);
+                    let base = object.interior.take().map(|i| *i).unwrap_or_default();
+                    object.interior = Some(Box::new(ev.interior_body(base)?));
                 }
                 Some(n) if matches!(ev.lookup(n), Some(Value::Material(_) | Value::Array(_))) => {
                     // A material identifier, or an element of an array of them.
@@ -825,7 +825,7 @@ impl Evaluator<'_> {
                         object.texture = Some(ev.share_texture(t));
                     }
                     if m.1.is_some() {
-                        object.interior = m.1;
+                        object.interior = m.1.map(Box::new);
                     }
                 }
                 _ => match ev.transform_modifier()? {

@@ -164,7 +164,7 @@ impl Evaluator<'_> {
                 "a quaternion julia_fractal takes only `sqr` or `cube`",
             ));
         }
-        Ok(shape(Shape::Julia(j)))
+        Ok(shape(Shape::Julia(Box::new(j))))
     }
 
     /// One of the fractal's own items; false (nothing read) for other words.

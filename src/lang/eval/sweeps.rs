@@ -80,14 +80,14 @@ impl Evaluator<'_> {
                 "the prism's two heights are equal: it has no volume",
             );
         }
-        Ok(shape(Shape::Prism(Prism {
+        Ok(shape(Shape::Prism(Box::new(Prism {
             spline,
             conic,
             height1,
             height2,
             points,
             open: false,
-        })))
+        }))))
     }
 
     /// `sor { n, <r, h> ... }` up to the modifiers.

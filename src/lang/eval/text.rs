@@ -33,7 +33,7 @@ impl Evaluator<'_> {
         let (path, mut font) = self.font(&font_name, font_span)?;
         let glyphs = font.layout(&text, DVec2::new(offset.x, offset.y));
         self.fonts.insert(path, font);
-        self.count_objects(glyphs.len() as u64, std::mem::size_of::<Object>(), kw.span)?;
+        self.count_objects(glyphs.len() as u64, super::budget::OBJECT_BYTES, kw.span)?;
         // Prism space (u, h, v) to text space: u is x, -v is y, the sweep h is z.
         let stand_up = DMat3::from_cols(DVec3::X, DVec3::Z, -DVec3::Y);
         let children = glyphs

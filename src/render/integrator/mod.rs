@@ -414,7 +414,7 @@ impl<'a> Integrator<'a> {
                 self.scene
                     .world
                     .blend_weights(b)
-                    .map(|(m, w)| (&self.scene.materials[m as usize].texture, w)),
+                    .map(|(m, w)| (&*self.scene.materials[m as usize].texture, w)),
                 s.texture_point(),
             ),
             None => texture_layers(&s.material.texture, s.texture_point()),
