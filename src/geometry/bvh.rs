@@ -394,6 +394,44 @@ impl Bvh {
     }
 }
 
+impl Bvh {
+    /// Whether `test` holds for an item whose box holds `p` (boxes are closed); stops at
+    /// the first that does. For point queries: which children of a CSG node may hold a
+    /// point.
+    pub fn any_containing(&self, p: DVec3, mut test: impl FnMut(u32) -> bool) -> bool {
+        if self.nodes.is_empty() {
+            return false;
+        }
+        let mut stack = [0u32; STACK_SIZE];
+        let mut top = 0usize;
+        let mut node = 0usize;
+        loop {
+            let n = &self.nodes[node];
+            let b = n.bounds.aabb();
+            if p.cmpge(b.min).all() && p.cmple(b.max).all() {
+                if n.count == 0 {
+                    stack[top] = n.offset;
+                    top += 1;
+                    node += 1;
+                    continue;
+                }
+                let start = n.offset as usize;
+                if self.items[start..start + n.count as usize]
+                    .iter()
+                    .any(|&item| test(item))
+                {
+                    return true;
+                }
+            }
+            if top == 0 {
+                return false;
+            }
+            top -= 1;
+            node = stack[top] as usize;
+        }
+    }
+}
+
 enum SahDecision {
     Leaf,
     Split(usize),

@@ -119,7 +119,7 @@ impl Evaluator<'_> {
 
     /// `#ifdef (Name)` and `#ifndef (Name)`: the name is read raw, as it may be undeclared.
     fn ifdef(&mut self, name: &str, span: Span) -> R<()> {
-        self.expect(Punct::LParen, &format!("after `#{name}`"))?;
+        self.expect_lazy(Punct::LParen, || format!("after `#{name}`"))?;
         let id = self.raw_next();
         let value = match id.ident() {
             Some(n) => self.lookup(n).cloned(),
@@ -138,7 +138,7 @@ impl Evaluator<'_> {
                 return Err(self.expected("`)`", &t));
             }
         }
-        self.expect(Punct::RParen, &format!("to close `#{name}(`"))?;
+        self.expect_lazy(Punct::RParen, || format!("to close `#{name}(`"))?;
         self.branch(defined == (name == "ifdef"), span)
     }
 
@@ -511,7 +511,7 @@ impl Evaluator<'_> {
         if self.peek()?.is_punct(Punct::LBracket) {
             return self.declare_element(&name, &id, span);
         }
-        self.expect(Punct::Eq, &format!("after `{name}`"))?;
+        self.expect_lazy(Punct::Eq, || format!("after `{name}`"))?;
         // A `#local` belongs to the scope it is written in, not to a macro the value calls:
         // that macro's scope is still open while its last tokens are read (`#local M =
         // Matrix_Trans(...)` in transforms.inc's Spline_Trans).

@@ -2,8 +2,6 @@
 //! `+ -`, `* /`, unary `- + !`, then `.x`-style components and `[i]` indexing.
 //! Colours are 5-vectors, so `White * 0.3` and `rgb 1 * 0.5` are ordinary arithmetic.
 
-use std::rc::Rc;
-
 use glam::DVec3;
 
 use super::super::diagnostics::Span;
@@ -473,8 +471,7 @@ impl Evaluator<'_> {
                 }
                 break;
             };
-            let word: Rc<str> = Rc::from(word);
-            match &*word {
+            match word {
                 // A second `rgb...` starts the next colour (as in `checker rgb A rgb B`);
                 // only component keywords may follow the first.
                 "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" | "srgbf" | "srgbt" | "srgbft"
@@ -486,7 +483,7 @@ impl Evaluator<'_> {
                     self.leave();
                     let (v, s) = r?;
                     span = span.join(s);
-                    c = Some(self.colour_from(&word, &v, s)?);
+                    c = Some(self.colour_from(word, &v, s)?);
                 }
                 "red" | "green" | "blue" | "filter" | "transmit" => {
                     self.next()?;
@@ -496,7 +493,7 @@ impl Evaluator<'_> {
                     let (v, s) = r?;
                     span = span.join(s);
                     let f = self.to_float(&v, s)?;
-                    let i = match &*word {
+                    let i = match word {
                         "red" => 0,
                         "green" => 1,
                         "blue" => 2,

@@ -37,7 +37,7 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("plane", |ev, _| kept(ev.plane()?)),
     ("box", |ev, _| kept(ev.box_shape()?)),
     ("union", |ev, kw| {
-        kept(ev.csg_children(&the(kw), Shape::Union)?)
+        kept(ev.csg_children(the(kw), Shape::Union)?)
     }),
     ("object", |ev, _| ev.object_reference()),
     ("cylinder", |ev, kw| kept(ev.cylinder(kw)?)),
@@ -54,13 +54,13 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("sor", |ev, _| kept(ev.sor_items()?)),
     ("lathe", |ev, _| kept(ev.lathe_items()?)),
     ("merge", |ev, kw| {
-        kept(ev.csg_children(&the(kw), Shape::Merge)?)
+        kept(ev.csg_children(the(kw), Shape::Merge)?)
     }),
     ("intersection", |ev, kw| {
-        kept(ev.csg_children(&the(kw), Shape::Intersection)?)
+        kept(ev.csg_children(the(kw), Shape::Intersection)?)
     }),
     ("difference", |ev, kw| {
-        kept(ev.csg_children(&the(kw), Shape::Difference)?)
+        kept(ev.csg_children(the(kw), Shape::Difference)?)
     }),
     ("superellipsoid", |ev, _| kept(ev.superellipsoid()?)),
     ("blob", |ev, kw| kept(ev.blob_items(kw)?)),
@@ -82,8 +82,18 @@ const SHAPES: &[(&str, ShapeReader)] = &[
 ];
 
 /// "the sphere": how errors name the block a keyword opened.
-fn the(kw: &Token) -> String {
-    format!("the {}", kw.ident().unwrap_or(""))
+/// "the sphere" for messages about the block `kw` opens: made once per keyword (a loop
+/// making a million spheres asked for it a million times).
+fn the(kw: &Token) -> &'static str {
+    thread_local! {
+        static THE: std::cell::RefCell<std::collections::HashMap<&'static str, &'static str>> =
+            Default::default();
+    }
+    let word = kw.ident().unwrap_or("");
+    THE.with_borrow_mut(|m| {
+        *m.entry(word)
+            .or_insert_with(|| crate::lang::parse::intern(&format!("the {word}")))
+    })
 }
 
 pub fn is_object_keyword(word: &str) -> bool {
@@ -115,8 +125,8 @@ impl Evaluator<'_> {
                 return Ok(ObjectValue::default());
             }
         };
-        self.modifiers(&mut o, &what)?;
-        self.block_end(open, &what)?;
+        self.modifiers(&mut o, what)?;
+        self.block_end(open, what)?;
         let empty_csg = o.lights.is_empty()
             && o.object
                 .as_ref()
@@ -328,7 +338,7 @@ impl Evaluator<'_> {
     /// shade (and the global lights, with `global_lights on`, read as a modifier). Nested
     /// groups keep their own: the innermost group an object is in decides.
     fn light_group_items(&mut self, kw: &Token) -> R<ObjectValue> {
-        let mut group = self.csg_children(&the(kw), Shape::Union)?;
+        let mut group = self.csg_children(the(kw), Shape::Union)?;
         let id = self.light_groups;
         self.light_groups += 1;
         for light in &mut group.lights {
