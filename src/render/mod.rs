@@ -287,10 +287,10 @@ fn uniform_passes(
     } else {
         vec![range.clone()]
     };
-    let mut film = checkpoint
-        .cloned()
-        .unwrap_or_else(|| Film::new(options.width, options.height));
-    let before = film.samples();
+    // Without a checkpoint the first pass's film becomes the render's: merged into an empty
+    // film it would be the same, at the cost of a second film (96 bytes a pixel).
+    let mut film = checkpoint.cloned();
+    let before = film.as_ref().map_or(0, Film::samples);
     let mut rays = RayCounts::default();
     for pass in passes {
         let plan = SamplePlan::Uniform {
@@ -301,14 +301,25 @@ fn uniform_passes(
             seed: options.seed,
             one_ray: false,
         };
-        let (part, pass_rays) = run(&plan, progress);
-        film.merge(&part);
+        let (mut part, pass_rays) = run(&plan, progress);
+        let film = match &mut film {
+            Some(f) => {
+                f.merge(&part);
+                f
+            }
+            None => {
+                // As `merge` leaves it.
+                part.non_finite.sort_unstable_by_key(|&(x, y)| (y, x));
+                film.insert(part)
+            }
+        };
         rays.add(&pass_rays);
         if progress.cancelled() {
             break;
         }
-        progress.pass(&film);
+        progress.pass(film);
     }
+    let film = film.unwrap_or_else(|| Film::new(options.width, options.height));
     let samples = film.samples() - before;
     (film, rays, samples)
 }
