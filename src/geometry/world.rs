@@ -239,22 +239,9 @@ impl WorldBuilder {
             .filter_map(|item| world.item_bounds(item.0))
             .filter(|b| b.is_finite() && !b.is_empty())
             .collect();
-        let mut bounded = Vec::new();
-        for item in &self.top {
-            match world.item_bounds(item.0) {
-                Some(b) if b.is_finite() && !b.is_empty() => bounded.push(item.0),
-                _ => world.unbounded.push(item.0),
-            }
-        }
-        // The bounds are computed again rather than kept: an array of them would be the
-        // build's largest after the primitives.
-        let bounds_of = |i: usize| world.item_bounds(bounded[i]).unwrap_or(Aabb::EMPTY);
-        let mut bvh = Bvh::build_from(bounded.len(), bounds_of);
-        for item in &mut bvh.items {
-            *item = bounded[*item as usize];
-        }
-        drop(bounded);
+        let (bvh, unbounded) = world.bvh_over(self.top.iter().map(|i| (i.0, i.0)), |_| true);
         world.bvh = bvh;
+        world.unbounded = unbounded;
         world.primitives_in_leaf_order();
         world
     }
@@ -331,25 +318,42 @@ impl World {
         if node.children.len() <= first + INDEXED_CHILDREN {
             return None;
         }
-        let mut bounded = Vec::new();
-        let mut unbounded = Vec::new();
-        for (j, &c) in node.children.iter().enumerate().skip(first) {
-            match self.item_bounds(c) {
-                Some(b) if b.is_finite() && !b.is_empty() && !self.holds_bound(c) => {
-                    bounded.push((j as u32, b));
-                }
-                _ => unbounded.push(j as u32),
-            }
-        }
-        let mut bvh = Bvh::build_from(bounded.len(), |i| bounded[i].1);
-        for item in &mut bvh.items {
-            *item = bounded[*item as usize].0;
-        }
+        let positions = node.children.iter().enumerate().skip(first);
+        let (bvh, unbounded) = self.bvh_over(positions.map(|(j, &c)| (j as u32, c)), |c| {
+            !self.holds_bound(c)
+        });
         Some(ChildIndex {
             first,
             bvh,
             unbounded,
         })
+    }
+
+    /// A BVH over the items with finite bounds that `trusted` accepts, its leaves holding
+    /// each item's label, and the labels of the others (to be tested always). The bounds
+    /// are computed again for the build rather than kept: an array of them would be the
+    /// build's largest after the primitives.
+    fn bvh_over(
+        &self,
+        items: impl Iterator<Item = (u32, u32)>,
+        trusted: impl Fn(u32) -> bool,
+    ) -> (Bvh, Vec<u32>) {
+        let mut bounded = Vec::new();
+        let mut unbounded = Vec::new();
+        for (label, item) in items {
+            match self.item_bounds(item) {
+                Some(b) if b.is_finite() && !b.is_empty() && trusted(item) => {
+                    bounded.push((label, item));
+                }
+                _ => unbounded.push(label),
+            }
+        }
+        let bounds_of = |i: usize| self.item_bounds(bounded[i].1).unwrap_or(Aabb::EMPTY);
+        let mut bvh = Bvh::build_from(bounded.len(), bounds_of);
+        for leaf in &mut bvh.items {
+            *leaf = bounded[*leaf as usize].0;
+        }
+        (bvh, unbounded)
     }
 
     /// Whether the item is or holds a `bounded_by` node.

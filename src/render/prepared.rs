@@ -523,20 +523,22 @@ impl Builder {
         if let Some(&index) = key.as_ref().and_then(|k| self.shared.get(k)) {
             return index;
         }
-        let index = self.new_material(looks);
+        let index = self.new_material(looks, key.is_some());
         if let Some(key) = key {
             self.shared.insert(key, index);
         }
         index
     }
 
-    fn new_material(&mut self, looks: Looks<'_>) -> u32 {
+    /// A material not made before; `shared`: others may share it ([`MaterialKey`]), so with
+    /// the default interior it is opaque and takes the interior all opaque ones share.
+    fn new_material(&mut self, looks: Looks<'_>, shared: bool) -> u32 {
         let interior = looks.interior;
         let next = self.interior_ids.len() as u32;
         let owner = match looks.interior_owner {
             Some(owner) => owner,
             // Opaque and with nothing inside: no ray enters, so all share one interior.
-            None if MaterialKey::of(looks).is_some() => OPAQUE_INTERIOR,
+            None if shared => OPAQUE_INTERIOR,
             // A default interior of its own: a key no address can take.
             None => OPAQUE_INTERIOR - 1 - self.materials.len(),
         };

@@ -375,9 +375,6 @@ impl Evaluator<'_> {
         let span = tok.span;
         let constant = |f: f64| Some(Value::Float(f));
         let vec3 = |x: f64, y: f64, z: f64| Some(Value::Vector(Vector::new3(DVec3::new(x, y, z))));
-        if is_animation_identifier(name) {
-            self.inputs.read_clock.set(true);
-        }
         let value = match name {
             "pi" => constant(std::f64::consts::PI),
             "true" | "yes" | "on" => constant(1.0),
@@ -399,16 +396,12 @@ impl Evaluator<'_> {
             })),
             "image_width" => constant(f64::from(self.image_width)),
             "image_height" => constant(f64::from(self.image_height)),
-            "clock" => constant(self.clock.clock),
-            "clock_delta" => constant(self.clock.clock_delta),
-            "clock_on" => constant(if self.clock.clock_on { 1.0 } else { 0.0 }),
-            "frame_number" => constant(self.clock.frame_number as f64),
-            "initial_frame" => constant(self.clock.initial_frame as f64),
-            "final_frame" => constant(self.clock.final_frame as f64),
-            "initial_clock" => constant(self.clock.initial_clock),
-            "final_clock" => constant(self.clock.final_clock),
             "version" => constant(self.scene.version),
-            _ => None,
+            _ => animation_value(&self.clock, name).and_then(|f| {
+                // The scene depends on the frame: the render job must rebuild it.
+                self.inputs.read_clock.set(true);
+                constant(f)
+            }),
         };
         if let Some(v) = value {
             self.next()?;
@@ -672,16 +665,16 @@ fn srgb_decode(v: f64) -> f64 {
 }
 
 /// The identifiers whose values change from frame to frame of an animation.
-fn is_animation_identifier(name: &str) -> bool {
-    matches!(
-        name,
-        "clock"
-            | "clock_delta"
-            | "clock_on"
-            | "frame_number"
-            | "initial_frame"
-            | "final_frame"
-            | "initial_clock"
-            | "final_clock"
-    )
+fn animation_value(clock: &crate::lang::AnimationClock, name: &str) -> Option<f64> {
+    Some(match name {
+        "clock" => clock.clock,
+        "clock_delta" => clock.clock_delta,
+        "clock_on" => f64::from(u8::from(clock.clock_on)),
+        "frame_number" => clock.frame_number as f64,
+        "initial_frame" => clock.initial_frame as f64,
+        "final_frame" => clock.final_frame as f64,
+        "initial_clock" => clock.initial_clock,
+        "final_clock" => clock.final_clock,
+        _ => return None,
+    })
 }

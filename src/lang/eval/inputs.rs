@@ -8,25 +8,26 @@
 //! render of a million spheres.
 
 use std::cell::{Cell, RefCell};
+use std::collections::BTreeSet;
 use std::path::PathBuf;
 
 use crate::lang::{LoadOptions, SourceFiles};
 use crate::output::Fnv;
 
-/// The files a scene read, in the order it first read them, and whether it read the
-/// animation clock.
+/// The files a scene read (sorted, so the hash does not depend on a set's order), and
+/// whether it read the animation clock.
 #[derive(Default)]
 pub struct Inputs {
-    files: RefCell<Vec<PathBuf>>,
-    seen: RefCell<std::collections::HashSet<PathBuf>>,
+    files: RefCell<BTreeSet<PathBuf>>,
     pub read_clock: Cell<bool>,
 }
 
 impl Inputs {
-    /// Notes a file the scene reads (or asks about); once per path.
+    /// Notes a file the scene reads (or asks about).
     pub fn file(&self, path: &std::path::Path) {
-        if self.seen.borrow_mut().insert(path.to_path_buf()) {
-            self.files.borrow_mut().push(path.to_path_buf());
+        let mut files = self.files.borrow_mut();
+        if !files.contains(path) {
+            files.insert(path.to_path_buf());
         }
     }
 

@@ -81,7 +81,6 @@ const SHAPES: &[(&str, ShapeReader)] = &[
     ("light_group", |ev, kw| kept(ev.light_group_items(kw)?)),
 ];
 
-/// "the sphere": how errors name the block a keyword opened.
 /// "the sphere" for messages about the block `kw` opens: made once per keyword (a loop
 /// making a million spheres asked for it a million times).
 fn the(kw: &Token) -> &'static str {
@@ -478,8 +477,7 @@ impl Evaluator<'_> {
             })?,
             "interior" => {
                 self.next()?;
-                let base = object.interior.take().map(|i| *i).unwrap_or_default();
-                object.interior = Some(Box::new(self.interior_body(base)?));
+                self.object_interior(object)?;
             }
             "material" => {
                 self.next()?;
@@ -679,6 +677,16 @@ impl Evaluator<'_> {
         )
     }
 
+    /// `interior { ... }` on an object: edits the interior it has, else the default one.
+    fn object_interior(&mut self, object: &mut Object) -> R<()> {
+        let base = object
+            .interior
+            .take()
+            .map_or_else(Interior::default, |i| *i);
+        object.interior = Some(Box::new(self.interior_body(base)?));
+        Ok(())
+    }
+
     pub(super) fn interior_body(&mut self, interior: Interior) -> R<Interior> {
         self.block_items("interior", "the interior", interior, |ev, tok, interior| {
             match tok.ident() {
@@ -820,8 +828,7 @@ impl Evaluator<'_> {
                 }
                 Some("interior") => {
                     ev.next()?;
-                    let base = object.interior.take().map(|i| *i).unwrap_or_default();
-                    object.interior = Some(Box::new(ev.interior_body(base)?));
+                    ev.object_interior(object)?;
                 }
                 Some(n) if matches!(ev.lookup(n), Some(Value::Material(_) | Value::Array(_))) => {
                     // A material identifier, or an element of an array of them.
