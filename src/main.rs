@@ -409,6 +409,12 @@ fn parse_declare(s: &str) -> Result<(String, f64), String> {
 }
 
 fn main() -> ExitCode {
+    // A reader that stops early (`penumbra compare ... | head`) closes the pipe: end quietly,
+    // as other command-line tools do, instead of panicking in `println!`.
+    // SAFETY: sets a signal's disposition to the default before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let argv: Vec<String> = std::env::args_os()
         .skip(1)
         .map(|a| a.to_string_lossy().into_owned())

@@ -6,10 +6,11 @@
 # Usage: docs/convergence/bench640.sh [SCENE.pov...]   (default: the scenes listed below)
 # Environment: SPP (default 1,4,16), SEEDS (default 2), THREADS (default 1: penumbra and
 # POV-Ray alike, so a loaded 2-core machine disturbs both the same way), OPTIONS (extra
-# penumbra render options, e.g. "--adaptive").
+# penumbra render options, e.g. "--adaptive"), OUT (default docs/convergence/640).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-SPP=${SPP:-1,4,16}
+SPP=${SPP:-2,4,8,16,32}
+OUT=${OUT:-docs/convergence/640}
 SEEDS=${SEEDS:-2}
 THREADS=${THREADS:-1}
 scenes=("$@")
@@ -17,10 +18,10 @@ scenes=("$@")
   scenes/area_grid_6x2.pov scenes/area_illumination.pov scenes/glass.pov
   scenes/reflection.pov scenes/checker.pov scenes/shape_quadrics.pov scenes/focal_blur.pov
   scenes/csg_operations.pov scenes/pattern_gradient.pov scenes/area_adaptive.pov)
-cargo build --release --quiet
-bin=./target/release/penumbra
+bin=${BIN:-./target/release/penumbra}
+[ -n "${BIN:-}" ] || cargo build --release --quiet
 refs=target/bench640
-mkdir -p "$refs" docs/convergence/640
+mkdir -p "$refs" "$OUT"
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .pov)
   [ -f "$refs/$name.exr" ] || "$bin" reference "$scene" --output "$refs/$name.exr" \
@@ -28,5 +29,5 @@ for scene in "${scenes[@]}"; do
   # shellcheck disable=SC2086
   "$bin" converge "$scene" --reference "$refs/$name.exr" --spp "$SPP" --seeds "$SEEDS" \
     --threads "$THREADS" --povray --quiet --targets 0.01,0.005,0.0025 ${OPTIONS:-} \
-    --output-dir "docs/convergence/640/$name"
+    --output-dir "$OUT/$name"
 done

@@ -257,6 +257,19 @@ impl PreparedArea {
         self.place(frame, u, v)
     }
 
+    /// Grid point `point` (row-major over size1 x size2), jittered by `jitter` where the
+    /// light has jitter, with its weight in POV-Ray's grid sum.
+    pub fn weighted_point(
+        &self,
+        frame: &AreaFrame,
+        point: u32,
+        jitter: (f64, f64),
+    ) -> (DVec3, f64) {
+        let (i, j) = ((point % self.size1) as usize, (point / self.size1) as usize);
+        let weight = cell_weight(&self.cdf1, i) * cell_weight(&self.cdf2, j);
+        (self.grid_point(frame, i, j, jitter), weight)
+    }
+
     /// The light's centre and axes as seen from one shading point (`towards` points from it
     /// to the centre; `orient` turns the axes to face it), computed once for all of that
     /// point's shadow rays.
@@ -428,6 +441,11 @@ fn pick(cdf: &[f64], s: f64) -> (usize, f64) {
         0.5
     };
     (i, r)
+}
+
+/// Entry `i`'s weight in a cumulative table.
+fn cell_weight(cdf: &[f64], i: usize) -> f64 {
+    cdf[i] - if i == 0 { 0.0 } else { cdf[i - 1] }
 }
 
 fn cumulative(w: &[f64]) -> Vec<f64> {

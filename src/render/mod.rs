@@ -301,7 +301,11 @@ fn uniform_passes(
             seed: options.seed,
             one_ray: false,
         };
-        let (mut part, pass_rays) = run(&plan, progress);
+        let PassOutput {
+            film: mut part,
+            rays: pass_rays,
+            ..
+        } = run(&plan, progress);
         let film = match &mut film {
             Some(f) => {
                 f.merge(&part);
@@ -337,31 +341,62 @@ fn doubling(range: Range<u32>) -> Vec<Range<u32>> {
     passes
 }
 
-/// Pixels rendered: the window's, or the whole image's.
-fn pixel_count(options: &RenderOptions) -> u64 {
-    match &options.window {
-        Some(win) => (win.x.len() * win.y.len()) as u64,
-        None => (options.width * options.height) as u64,
+/// Samples per pixel of the adaptive pilot pass, which is also the least any pixel takes
+/// after it: a quarter of the budget, from 2 to 4 (fewer see too little of the noise;
+/// more spend the budget on the pilot, which is not kept).
+fn adaptive_pilot(spp: u32) -> u32 {
+    (spp / 4).clamp(2, 4)
+}
+
+/// How far (in pixels) the pilot's penumbrae are widened. A penumbra seen by none of a
+/// pixel's four one-ray pilot samples may be there all the same, only rarer: at its edge,
+/// where little of the light is hidden. It is seldom that nothing within this reach shows it.
+const PENUMBRA_REACH: usize = 3;
+
+/// A render pass, as `render` runs it on its thread pool.
+type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress) -> PassOutput + 'a;
+
+/// What one pass over the image leaves.
+struct PassOutput {
+    film: Film,
+    rays: RayCounts,
+    /// Per pixel, what its samples met.
+    work: Vec<PixelWork>,
+}
+
+/// What one pixel's samples met in a pass.
+#[derive(Clone, Copy, Debug, Default)]
+struct PixelWork {
+    /// Rays traced, of all kinds: the pixel's cost.
+    rays: u32,
+    /// Some shadow ray towards an area light arrived and some was stopped (or one was
+    /// filtered): the pixel sees a penumbra of some light.
+    penumbra: bool,
+}
+
+impl PixelWork {
+    fn merge(&mut self, other: PixelWork) {
+        self.rays = self.rays.saturating_add(other.rays);
+        self.penumbra |= other.penumbra;
     }
 }
 
-/// Samples per pixel of the adaptive pilot pass.
-const ADAPTIVE_PILOT: u32 = 4;
-
-/// A render pass, as `render` runs it on its thread pool.
-type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress) -> (Film, RayCounts) + 'a;
-
-/// Adaptive sampling in two passes. A pilot of a few samples per pixel measures the noise;
-/// each pixel's further samples then follow the noise its neighbours showed, not its own,
-/// so its sample count does not depend on its own samples and the pilot's samples can be
-/// kept in its mean without bias (a pixel's own noise deciding its count would bias it).
+/// Adaptive sampling in two passes. A pilot of a few samples per pixel, with one shadow ray
+/// per area light, measures each pixel's noise and cost and finds the penumbrae; its
+/// samples are then discarded, so what it decides for a pixel may depend on the pixel
+/// itself (its own pilot is the surest sign of a penumbra) without biasing the pixel's
+/// mean, made of the second pass's samples alone. Around a penumbra (the pixel or a
+/// neighbour saw one) the second pass covers the light grid ([`LightSamples::Cover`]) with
+/// `spp` samples; elsewhere every shadow ray of the pilot agreed, so one shadow ray per
+/// sample is exact, and those pixels share the time `spp` one-ray samples each would take
+/// as [`allocate`] says.
 fn adaptive_passes(
     options: &RenderOptions,
     spp: u32,
     run: &Pass,
     progress: &dyn Progress,
 ) -> (Film, RayCounts, u64) {
-    let pilot_spp = ADAPTIVE_PILOT.min(spp);
+    let pilot_spp = adaptive_pilot(spp);
     let pilot = SamplePlan::Uniform {
         spp: pilot_spp,
         range: 0..pilot_spp,
@@ -370,48 +405,44 @@ fn adaptive_passes(
         seed: options.seed ^ 0xad47_1be5_5eed_0001,
         one_ray: true,
     };
-    let (mut film, mut rays) = run(&pilot, &());
-    let noise = neighbour_noise(&film);
-    let counts = allocate(&noise, pilot_spp, spp);
-    let extra: u64 = counts.iter().map(|&n| n as u64).sum();
-    // Where the neighbours showed no noise at all, the light is seen whole or not at all
-    // there: one shadow ray per sample is exact, and covering the grid would be wasted.
-    let one_ray: Vec<bool> = noise.iter().map(|&s| s == 0.0).collect();
+    let PassOutput {
+        film: pilot,
+        mut rays,
+        work,
+    } = run(&pilot, &());
+    let penumbra: Vec<bool> = work.iter().map(|p| p.penumbra).collect();
+    let one_ray: Vec<bool> = dilate(&penumbra, pilot.width, PENUMBRA_REACH)
+        .iter()
+        .map(|&p| !p)
+        .collect();
+    let pixels: Vec<AdaptivePixel> = noise_around(&pilot)
+        .into_iter()
+        .zip(&work)
+        .zip(&one_ray)
+        .map(|((noise, w), &one_ray)| AdaptivePixel {
+            noise,
+            cost: f64::from(w.rays.max(1)) / f64::from(pilot_spp),
+            one_ray,
+        })
+        .collect();
     let plan = SamplePlan::PerPixel {
-        counts,
+        counts: allocate(&pixels, spp, pilot_spp),
         seed: options.seed,
         one_ray,
     };
-    let (more, more_rays) = run(&plan, progress);
-    // The pilot's one-ray samples stay in a pixel's mean only where its further samples
-    // are of the same kind: beside samples that cover the light grid they would only add
-    // their noise. (Which it is depends on the neighbours alone, so either mean is unbiased.)
-    let SamplePlan::PerPixel {
-        counts, one_ray, ..
-    } = &plan
-    else {
-        unreachable!("the plan above is per pixel")
-    };
-    let w = options.width;
-    let outside = |i: usize| {
-        let win = options.window.as_ref();
-        win.is_some_and(|win| !win.contains(i % w, i / w))
-    };
-    for (i, (pixel, extra)) in film.pixels.iter_mut().zip(&more.pixels).enumerate() {
-        if outside(i) {
-            // The pilot covered the whole image, for the allocation; the window alone shows.
-            *pixel = PixelSum::default();
-        } else if one_ray[i] || counts[i] == 0 {
-            pixel.merge(extra);
-        } else {
-            *pixel = *extra;
+    let mut more = run(&plan, progress);
+    rays.add(&more.rays);
+    if let Some(win) = &options.window {
+        // The pilot covered the whole image, for the allocation; the window alone shows.
+        let w = options.width;
+        for (i, pixel) in more.film.pixels.iter_mut().enumerate() {
+            if !win.contains(i % w, i / w) {
+                *pixel = PixelSum::default();
+            }
         }
     }
-    film.non_finite
-        .retain(|&(x, y)| !outside(y as usize * w + x as usize));
-    film.non_finite.extend_from_slice(&more.non_finite);
-    rays.add(&more_rays);
-    (film, rays, extra + pixel_count(options) * pilot_spp as u64)
+    let samples = more.film.samples();
+    (more.film, rays, samples)
 }
 
 /// Which samples each pixel takes.
@@ -491,27 +522,54 @@ impl SamplePlan<'_> {
     }
 }
 
-/// The noise around each pixel after a pilot of `pilot_spp` samples: the largest pilot
-/// deviation among its eight neighbours. A pilot of a few samples can miss noise that is
-/// there (four light samples that happen to agree), hence the neighbourhood; the pixel
-/// itself is left out so that what is decided from this does not depend on its own samples.
+/// The noise around each pixel after a pilot: the largest pilot deviation among its eight
+/// neighbours. A pilot of a few samples can miss noise that is there (four light samples
+/// that happen to agree), hence the neighbourhood; the pixel itself is left out so that
+/// what is decided from this does not depend on its own samples, which stay in its mean.
 fn neighbour_noise(pilot: &Film) -> Vec<f64> {
-    let (w, h) = (pilot.width, pilot.height);
+    largest_deviation(pilot, |i, j| i != j)
+}
+
+/// As [`neighbour_noise`], the pixel itself included: for a pilot that is discarded.
+fn noise_around(pilot: &Film) -> Vec<f64> {
+    largest_deviation(pilot, |_, _| true)
+}
+
+/// Per pixel, the largest sample deviation over the pixels `j` of its 3 x 3 block that
+/// `keep(i, j)` accepts.
+fn largest_deviation(pilot: &Film, keep: impl Fn(usize, usize) -> bool) -> Vec<f64> {
     let sigma: Vec<f64> = pilot.pixels.iter().map(sample_deviation).collect();
-    (0..w * h)
-        .map(|i| {
-            let (x, y) = (i % w, i / w);
-            let mut m = 0.0f64;
-            for yy in y.saturating_sub(1)..(y + 2).min(h) {
-                for xx in x.saturating_sub(1)..(x + 2).min(w) {
-                    if (xx, yy) != (x, y) {
-                        m = m.max(sigma[yy * w + xx]);
-                    }
-                }
-            }
-            m
+    around(pilot.width, pilot.height)
+        .enumerate()
+        .map(|(i, near)| {
+            let kept = near.into_iter().filter(|&j| keep(i, j));
+            kept.map(|j| sigma[j]).fold(0.0, f64::max)
         })
         .collect()
+}
+
+/// The mask (rows of `w`) widened by `r` pixels each way: true where a true pixel is within
+/// the (2r + 1) square around. Separable: rows first, then columns.
+fn dilate(mask: &[bool], w: usize, r: usize) -> Vec<bool> {
+    let h = mask.len() / w.max(1);
+    let reach = |n: usize, i: usize| i.saturating_sub(r)..(i + r + 1).min(n);
+    let rows: Vec<bool> = (0..mask.len())
+        .map(|i| reach(w, i % w).any(|x| mask[i - i % w + x]))
+        .collect();
+    (0..mask.len())
+        .map(|i| reach(h, i / w).any(|y| rows[y * w + i % w]))
+        .collect()
+}
+
+/// For each pixel of a w x h image in row-major order, the indices of the pixels of the
+/// 3 x 3 block around it (fewer at the borders), itself included.
+fn around(w: usize, h: usize) -> impl Iterator<Item = Vec<usize>> {
+    (0..w * h).map(move |i| {
+        let (x, y) = (i % w, i / w);
+        let rows = y.saturating_sub(1)..(y + 2).min(h);
+        rows.flat_map(|yy| (x.saturating_sub(1)..(x + 2).min(w)).map(move |xx| yy * w + xx))
+            .collect()
+    })
 }
 
 /// The standard deviation of one sample of the pixel, over the three channels (0 with fewer
@@ -521,22 +579,32 @@ fn sample_deviation(p: &PixelSum) -> f64 {
     (f64::from(p.count) * (v[0] + v[1] + v[2]) / 3.0).sqrt()
 }
 
-/// The samples each pixel takes after the pilot, for `spp` per pixel on average in all, in
-/// proportion to the noise around it (which minimises the summed variance for a fixed
-/// budget).
-fn allocate(noise: &[f64], pilot_spp: u32, spp: u32) -> Vec<u32> {
-    let pixels = noise.len() as f64;
-    let spare = (spp - pilot_spp) as f64 * pixels;
-    let total: f64 = noise.iter().sum();
-    noise
+/// What the adaptive pilot found at one pixel.
+struct AdaptivePixel {
+    /// The largest deviation of one sample in the 3 x 3 block around it.
+    noise: f64,
+    /// Rays per (one-ray) sample.
+    cost: f64,
+    /// No penumbra near: one shadow ray per sample.
+    one_ray: bool,
+}
+
+/// The samples each pixel takes after the pilot. Where the light grid is covered, `spp`.
+/// The one-ray pixels share the time `spp` samples each would take: pixel i gets n_i in
+/// proportion to s_i / sqrt(c_i) (noise s, cost per sample c), which minimises their summed
+/// variance sum s_i^2 / n_i for the time sum n_i c_i; at least `least` each, so a pixel whose
+/// noise the pilot missed still has a few.
+fn allocate(pixels: &[AdaptivePixel], spp: u32, least: u32) -> Vec<u32> {
+    let least = least.min(spp);
+    let open = || pixels.iter().filter(|p| p.one_ray);
+    let time: f64 = open().map(|p| p.cost * f64::from(spp - least)).sum();
+    let weight = |p: &AdaptivePixel| p.noise / p.cost.sqrt();
+    let spent: f64 = open().map(|p| weight(p) * p.cost).sum();
+    pixels
         .iter()
-        .map(|s| {
-            let extra = if total > 0.0 {
-                spare * s / total
-            } else {
-                spare / pixels
-            };
-            extra.round() as u32
+        .map(|p| match (p.one_ray, spent > 0.0) {
+            (false, _) | (true, false) => spp,
+            (true, true) => least + (time * weight(p) / spent).round() as u32,
         })
         .collect()
 }
@@ -576,7 +644,7 @@ fn render_pass(
     options: &RenderOptions,
     plan: &SamplePlan,
     progress: &dyn Progress,
-) -> (Film, RayCounts) {
+) -> PassOutput {
     let shooter = Integrator::new(scene, options);
     let first_radius = scene
         .settings
@@ -594,8 +662,11 @@ fn render_pass(
         .step_by(PHOTON_BATCH as usize)
         .map(|a| a..(a + PHOTON_BATCH).min(span.end))
         .collect();
-    let mut film = Film::new(options.width, options.height);
-    let mut rays = RayCounts::default();
+    let mut out = PassOutput {
+        film: Film::new(options.width, options.height),
+        rays: RayCounts::default(),
+        work: vec![PixelWork::default(); options.width * options.height],
+    };
     for (i, batch) in batches.iter().enumerate() {
         let maps = photons::PhotonMaps {
             first: batch.start,
@@ -613,14 +684,17 @@ fn render_pass(
             indices: batch.clone(),
             number: (i as u64, batches.len() as u64),
         };
-        let (part, part_rays) = render_indices(scene, options, plan, Some(&photons), progress);
-        film.merge(&part);
-        rays.add(&part_rays);
+        let part = render_indices(scene, options, plan, Some(&photons), progress);
+        out.film.merge(&part.film);
+        out.rays.add(&part.rays);
+        for (a, b) in out.work.iter_mut().zip(part.work) {
+            a.merge(b);
+        }
         if progress.cancelled() {
             break;
         }
     }
-    (film, rays)
+    out
 }
 
 /// The sample indices one batch renders, with their photon passes.
@@ -638,7 +712,7 @@ fn render_indices(
     plan: &SamplePlan,
     photons: Option<&PhotonBatch>,
     progress: &dyn Progress,
-) -> (Film, RayCounts) {
+) -> PassOutput {
     let (w, h) = (options.width, options.height);
     let window = match plan {
         // In adaptive mode the one uniform plan is the pilot.
@@ -684,6 +758,7 @@ fn render_indices(
         let mut sampler = new_sampler(1);
         let mut counts = RayCounts::default();
         let mut sums = Vec::with_capacity(TILE * TILE);
+        let mut work = Vec::with_capacity(TILE * TILE);
         let mut non_finite = Vec::new();
         for y in y0..(y0 + TILE).min(h) {
             for x in x0..(x0 + TILE).min(w) {
@@ -699,6 +774,7 @@ fn render_indices(
                 };
                 if !inside(x, y) {
                     sums.push(PixelSum::default());
+                    work.push(PixelWork::default());
                     continue;
                 }
                 if sampler.samples_per_pixel() != spp {
@@ -710,6 +786,7 @@ fn render_indices(
                     &integrator
                 };
                 let mut sum = PixelSum::default();
+                let before = counts;
                 for index in range {
                     if progress.cancelled() {
                         break;
@@ -728,22 +805,87 @@ fn render_indices(
                     }
                 }
                 sums.push(sum);
+                work.push(PixelWork {
+                    rays: (counts.total() - before.total())
+                        .try_into()
+                        .unwrap_or(u32::MAX),
+                    penumbra: counts.area_lit > before.area_lit
+                        && counts.area_shadowed > before.area_shadowed,
+                });
             }
         }
         let n = done.fetch_add(1, Ordering::Relaxed) + 1;
         progress.advance(n, total);
-        (sums, counts, non_finite)
+        (sums, work, counts, non_finite)
     };
     let results: Vec<_> = tiles.par_iter().map(render_tile).collect();
-    let mut film = Film::new(w, h);
-    let mut rays = RayCounts::default();
-    for (&(x0, y0), (sums, counts, non_finite)) in tiles.iter().zip(results) {
+    let mut out = PassOutput {
+        film: Film::new(w, h),
+        rays: RayCounts::default(),
+        work: vec![PixelWork::default(); w * h],
+    };
+    for (&(x0, y0), (sums, work, counts, non_finite)) in tiles.iter().zip(results) {
         let tw = (x0 + TILE).min(w) - x0;
-        for (i, s) in sums.into_iter().enumerate() {
-            film.pixels[(y0 + i / tw) * w + x0 + i % tw] = s;
+        for (i, (s, p)) in sums.into_iter().zip(work).enumerate() {
+            let at = (y0 + i / tw) * w + x0 + i % tw;
+            out.film.pixels[at] = s;
+            out.work[at] = p;
         }
-        rays.add(&counts);
-        film.non_finite.extend(non_finite);
+        out.rays.add(&counts);
+        out.film.non_finite.extend(non_finite);
     }
-    (film, rays)
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_penumbra_widens_by_its_reach_and_stops_at_the_borders() {
+        let (w, h) = (9, 7);
+        let mut mask = vec![false; w * h];
+        mask[2 * w + 1] = true;
+        let wide = dilate(&mask, w, 2);
+        for y in 0..h {
+            for x in 0..w {
+                let expect = x <= 3 && y <= 4;
+                assert_eq!(wide[y * w + x], expect, "({x}, {y})");
+            }
+        }
+        assert_eq!(dilate(&mask, w, 0), mask);
+    }
+
+    #[test]
+    fn one_ray_pixels_share_their_time_by_noise_over_the_root_of_cost() {
+        let pixel = |noise: f64, cost: f64, one_ray: bool| AdaptivePixel {
+            noise,
+            cost,
+            one_ray,
+        };
+        let pixels = [
+            pixel(0.0, 2.0, true),
+            pixel(1.0, 2.0, true),
+            pixel(1.0, 8.0, true),
+            pixel(5.0, 2.0, false),
+        ];
+        let counts = allocate(&pixels, 16, 4);
+        // The covered pixel takes the budget's count; the others at least 4, and the rest
+        // of their time (12 more samples each at its cost: 144) goes as noise / sqrt(cost)
+        // per sample: weights 0, 1/sqrt(2), 1/sqrt(8), times the costs: time shares 0, 1/3,
+        // 2/3, so 48 / 2 and 96 / 8 samples.
+        assert_eq!(counts[3], 16);
+        assert_eq!(counts[0], 4);
+        assert_eq!(counts[1], 4 + 24);
+        assert_eq!(counts[2], 4 + 12);
+        let time: f64 = counts[..3]
+            .iter()
+            .zip(&pixels)
+            .map(|(&n, p)| f64::from(n) * p.cost)
+            .sum();
+        assert!((time - 16.0 * 12.0).abs() < 1e-9, "{time}");
+        // No noise anywhere: every pixel takes the budget's count.
+        let quiet = [pixel(0.0, 1.0, true), pixel(0.0, 3.0, true)];
+        assert_eq!(allocate(&quiet, 8, 2), vec![8, 8]);
+    }
 }

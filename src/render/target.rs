@@ -90,7 +90,9 @@ pub(super) fn render_to_error(
         seed: pass_seed(options.seed, 0),
         one_ray: false,
     };
-    let (mut film, mut rays) = run(&first, progress);
+    let super::PassOutput {
+        mut film, mut rays, ..
+    } = run(&first, progress);
     let pixels = film.pixels.len() as u64;
     let cap = u64::from(target.max_spp.max(FIRST_PASS)) * pixels;
     for pass in 1.. {
@@ -107,9 +109,9 @@ pub(super) fn render_to_error(
             seed: pass_seed(options.seed, pass),
             one_ray: vec![false; film.pixels.len()],
         };
-        let (more, more_rays) = run(&plan, progress);
-        film.merge(&more);
-        rays.add(&more_rays);
+        let more = run(&plan, progress);
+        film.merge(&more.film);
+        rays.add(&more.rays);
     }
     let samples = film.samples();
     (film, rays, samples)

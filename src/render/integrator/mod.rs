@@ -53,6 +53,10 @@ pub struct RayCounts {
     pub camera: u64,
     pub shadow: u64,
     pub secondary: u64,
+    /// Shadow rays towards area lights that arrived (wholly or in part) and that were
+    /// stopped (wholly or in part): where a pixel has both, it sees a penumbra.
+    pub area_lit: u64,
+    pub area_shadowed: u64,
 }
 
 impl RayCounts {
@@ -60,6 +64,8 @@ impl RayCounts {
         self.camera += o.camera;
         self.shadow += o.shadow;
         self.secondary += o.secondary;
+        self.area_lit += o.area_lit;
+        self.area_shadowed += o.area_shadowed;
     }
 
     pub fn total(&self) -> u64 {
