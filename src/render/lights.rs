@@ -39,6 +39,98 @@ pub struct PreparedArea {
     /// Cumulative grid weights along each axis; the last entry is 1.
     cdf1: Vec<f64>,
     cdf2: Vec<f64>,
+    /// The grid's points by weight, for covering it a pixel at a time.
+    pub order: WeightOrder,
+}
+
+/// A light grid's points laid end to end on a line of length [`WeightOrder::TOTAL`], each
+/// taking a stretch as long as its weight in POV-Ray's grid sum, grouped by weight: the
+/// weights are POV-Ray's halvings, so each is a whole number of units and the classes are
+/// few (three for 9 x 9). Which point of a class a stretch holds is left to a permutation.
+#[derive(Clone, Debug)]
+pub struct WeightOrder {
+    /// Point indices (row-major over the grid), class by class.
+    points: Vec<u32>,
+    classes: Vec<WeightClass>,
+}
+
+/// Points of one weight: `points[first..first + len]`, each `units` long, from `start` on
+/// the line.
+#[derive(Clone, Copy, Debug)]
+struct WeightClass {
+    first: u32,
+    len: u32,
+    units: u64,
+    start: u64,
+}
+
+/// A stretch of the weight line: which point it holds and how long it is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stretch {
+    pub point: u32,
+    pub units: u64,
+}
+
+impl WeightOrder {
+    /// The line's length: weights in units of 2^-32.
+    pub const TOTAL: u64 = 1 << 32;
+
+    fn new(w1: &[f64], w2: &[f64]) -> WeightOrder {
+        let units = |w: f64| (w * Self::TOTAL as f64).round() as u64;
+        let mut by_weight: Vec<(u64, u32)> = (0..w1.len() * w2.len())
+            .map(|g| (units(w1[g % w1.len()] * w2[g / w1.len()]), g as u32))
+            .filter(|&(u, _)| u > 0)
+            .collect();
+        by_weight.sort_unstable_by_key(|&(u, g)| (std::cmp::Reverse(u), g));
+        let mut classes: Vec<WeightClass> = Vec::new();
+        let mut start = 0;
+        for (i, &(u, _)) in by_weight.iter().enumerate() {
+            match classes.last_mut() {
+                Some(c) if c.units == u => c.len += 1,
+                _ => classes.push(WeightClass {
+                    first: i as u32,
+                    len: 1,
+                    units: u,
+                    start,
+                }),
+            }
+            start += u;
+        }
+        WeightOrder {
+            points: by_weight.into_iter().map(|(_, g)| g).collect(),
+            classes,
+        }
+    }
+
+    /// The stretch holding position `at` of the line (taken modulo its length), with the
+    /// points of each class in the order `permute(_, len, seed)` gives them, and where the
+    /// stretch ends (on the same unrolled line as `at`).
+    pub fn stretch_at(&self, at: u64, seed: u32) -> (Stretch, u64) {
+        let (round, u) = (at / Self::TOTAL, at % Self::TOTAL);
+        let last = self.classes.len() - 1;
+        let c = self
+            .classes
+            .iter()
+            .position(|c| u < c.start + c.len as u64 * c.units);
+        let class = self.classes[c.unwrap_or(last)];
+        let q = ((u.saturating_sub(class.start)) / class.units).min(class.len as u64 - 1);
+        let seed = seed ^ (class.first.wrapping_mul(0x9e37_79b9));
+        let point = self.points
+            [(class.first + super::sampler::permute(q as u32, class.len, seed)) as usize];
+        let end = round * Self::TOTAL + class.start + (q + 1) * class.units;
+        let end = if c.is_none() {
+            (round + 1) * Self::TOTAL
+        } else {
+            end
+        };
+        (
+            Stretch {
+                point,
+                units: class.units,
+            },
+            end,
+        )
+    }
 }
 
 /// How many shadow rays an area light gets per shading point.
@@ -89,6 +181,7 @@ impl PreparedLight {
             adaptive: a.adaptive,
             cdf1: cumulative(&grid_weights(a.size1.max(1))),
             cdf2: cumulative(&grid_weights(a.size2.max(1))),
+            order: WeightOrder::new(&grid_weights(a.size1.max(1)), &grid_weights(a.size2.max(1))),
         });
         PreparedLight {
             kind: light.kind,
@@ -258,7 +351,15 @@ impl PreparedArea {
     }
 
     /// Grid point `point` (row-major over size1 x size2), jittered by `jitter` where the
-    /// light has jitter, with its weight in POV-Ray's grid sum.
+    /// light has jitter.
+    pub fn point_at(&self, frame: &AreaFrame, point: u32, jitter: (f64, f64)) -> DVec3 {
+        let (i, j) = ((point % self.size1) as usize, (point / self.size1) as usize);
+        self.grid_point(frame, i, j, jitter)
+    }
+
+    /// [`Self::point_at`] with the point's weight in POV-Ray's grid sum: for tests that
+    /// compute that sum exactly.
+    #[cfg(test)]
     pub fn weighted_point(
         &self,
         frame: &AreaFrame,
@@ -444,6 +545,7 @@ fn pick(cdf: &[f64], s: f64) -> (usize, f64) {
 }
 
 /// Entry `i`'s weight in a cumulative table.
+#[cfg(test)]
 fn cell_weight(cdf: &[f64], i: usize) -> f64 {
     cdf[i] - if i == 0 { 0.0 } else { cdf[i - 1] }
 }
@@ -488,6 +590,31 @@ pub fn grid_weights(n: u32) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_weight_line_holds_each_point_once_for_its_weight() {
+        for (n1, n2) in [(9, 9), (5, 5), (6, 2), (1, 3), (7, 1)] {
+            let (w1, w2) = (grid_weights(n1), grid_weights(n2));
+            let order = WeightOrder::new(&w1, &w2);
+            let mut seen = vec![0u64; (n1 * n2) as usize];
+            let mut at = 0;
+            while at < WeightOrder::TOTAL {
+                let (stretch, end) = order.stretch_at(at, 12345);
+                assert!(end > at);
+                seen[stretch.point as usize] += end - at;
+                at = end;
+            }
+            assert_eq!(at, WeightOrder::TOTAL, "{n1}x{n2}");
+            for (g, &units) in seen.iter().enumerate() {
+                let w = w1[g % n1 as usize] * w2[g / n1 as usize];
+                assert_eq!(
+                    units as f64 / WeightOrder::TOTAL as f64,
+                    w,
+                    "{n1}x{n2} point {g}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn grid_weights_match_povray() {
