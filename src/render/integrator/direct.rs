@@ -469,6 +469,7 @@ const COVER_SHARED: u32 = 16;
 ///   samples ([`COVER_SHARED`]);
 /// - unbiased: pi(k) is any block with equal chance, and over the blocks each point counts
 ///   R times its weight, a 1/N share of it on average per block, block length R/N.
+///
 /// Each sample tests about K / min(N, 16) + 1 points of a K-point grid.
 fn cover_grid(
     q: &ShadowQuery,
