@@ -4,9 +4,12 @@
 # against a POV-Ray reference at k = 8 (cached under target/bench640: they take minutes to
 # hours each). Writes docs/convergence/640/NAME/ and prints each scene's summary.
 # Usage: docs/convergence/bench640.sh [SCENE.pov...]   (default: the scenes listed below)
-# Environment: SPP (default 1,4,16), SEEDS (default 2), THREADS (default 1: penumbra and
-# POV-Ray alike, so a loaded 2-core machine disturbs both the same way), OPTIONS (extra
-# penumbra render options, e.g. "--adaptive"), OUT (default docs/convergence/640).
+# Environment: SPP (default 2,4,8,16,32), SEEDS (default 2), THREADS (default 1: penumbra
+# and POV-Ray alike, so a loaded 2-core machine disturbs both the same way), OPTIONS (extra
+# penumbra render options, e.g. "--adaptive"), OUT (default docs/convergence/640), BIN (a
+# built penumbra, instead of building one). Run it once as it is and once with
+# OPTIONS=--adaptive OUT=docs/convergence/640-adaptive (two at a time on two cores, one
+# thread each); it then writes the equal-error table of both, docs/convergence/640/table.md.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 SPP=${SPP:-2,4,8,16,32}
@@ -31,3 +34,7 @@ for scene in "${scenes[@]}"; do
     --threads "$THREADS" --povray --quiet --targets 0.01,0.005,0.0025 ${OPTIONS:-} \
     --output-dir "$OUT/$name"
 done
+if [ -d docs/convergence/640 ] && [ -d docs/convergence/640-adaptive ]; then
+  python3 docs/convergence/bench640_table.py uniform=docs/convergence/640 \
+    adaptive=docs/convergence/640-adaptive > docs/convergence/640/table.md
+fi

@@ -133,6 +133,14 @@ impl WeightOrder {
     }
 }
 
+/// How many of a pixel's samples share one cover of an area light's grid: each further
+/// `COVER_SHARED` samples cover it once more. Within a penumbra each grid point's shadow
+/// edge crosses some pixels, and a pixel that tests that point once sees it at one position
+/// only; testing every point again as the samples grow lets that noise fall with them
+/// (at 640x480 under a 9x9 light, one cover for all of 32 samples left their noise at 0.0013
+/// where 16 samples had 0.0015).
+pub const COVER_SHARED: u32 = 16;
+
 /// How many shadow rays an area light gets per shading point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LightSamples {

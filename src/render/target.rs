@@ -88,7 +88,7 @@ pub(super) fn render_to_error(
         first: 0,
         checkpoint: None,
         seed: pass_seed(options.seed, 0),
-        one_ray: false,
+        fixed_light: None,
     };
     let super::PassOutput {
         mut film, mut rays, ..

@@ -11,7 +11,9 @@ use crate::appearance::{perturbed_normal, texture_layers};
 use crate::geometry::{Hit, Ray, offset_point};
 use crate::render::dimensions::Purpose;
 use crate::render::lights::LightSamples;
-use crate::render::lights::{AreaLightMode, PreparedArea, PreparedLight, WeightOrder};
+use crate::render::lights::{
+    AreaLightMode, COVER_SHARED, PreparedArea, PreparedLight, WeightOrder,
+};
 use crate::render::prepared::{Material, PreparedScene};
 use crate::render::sampler::{PixelSampler, permute};
 use crate::scene::{Colour, Finish, LightGroup};
@@ -446,14 +448,6 @@ fn caustics_at(scene: &PreparedScene, ray: &Ray, hit: &Hit, material: &Material)
     let n = perturbed_normal(&material.texture, &surface, facing);
     caustic_factor(material.interior.caustics, n.dot(d))
 }
-
-/// How many of a pixel's samples share one cover of an area light's grid: each further
-/// `COVER_SHARED` samples cover it once more. Within a penumbra each grid point's shadow
-/// edge crosses some pixels, and a pixel that tests that point once sees it at one position
-/// only; testing every point again as the samples grow lets that noise fall with them
-/// (at 640x480 under a 9x9 light, one cover for all of 32 samples left their noise at 0.0013
-/// where 16 samples had 0.0015).
-const COVER_SHARED: u32 = 16;
 
 /// The light's grid shared out over the pixel's samples, each point tested as often as any
 /// other and each sample weighing what it tests to the whole light. The grid's points lie
