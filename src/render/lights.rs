@@ -64,13 +64,6 @@ struct WeightClass {
     start: u64,
 }
 
-/// A stretch of the weight line: which point it holds and how long it is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Stretch {
-    pub point: u32,
-    pub units: u64,
-}
-
 impl WeightOrder {
     /// The line's length: weights in units of 2^-32.
     pub const TOTAL: u64 = 1 << 32;
@@ -102,10 +95,10 @@ impl WeightOrder {
         }
     }
 
-    /// The stretch holding position `at` of the line (taken modulo its length), with the
-    /// points of each class in the order `permute(_, len, seed)` gives them, and where the
-    /// stretch ends (on the same unrolled line as `at`).
-    pub fn stretch_at(&self, at: u64, seed: u32) -> (Stretch, u64) {
+    /// The point whose stretch holds position `at` of the line (taken modulo its
+    /// length), with the points of each class in the order `permute(_, len, seed)` gives
+    /// them, and where that stretch ends (on the same unrolled line as `at`).
+    pub fn stretch_at(&self, at: u64, seed: u32) -> (u32, u64) {
         let (round, u) = (at / Self::TOTAL, at % Self::TOTAL);
         let last = self.classes.len() - 1;
         let c = self
@@ -113,23 +106,15 @@ impl WeightOrder {
             .iter()
             .position(|c| u < c.start + c.len as u64 * c.units);
         let class = self.classes[c.unwrap_or(last)];
-        let q = ((u.saturating_sub(class.start)) / class.units).min(class.len as u64 - 1);
-        let seed = seed ^ (class.first.wrapping_mul(0x9e37_79b9));
-        let point = self.points
-            [(class.first + super::sampler::permute(q as u32, class.len, seed)) as usize];
-        let end = round * Self::TOTAL + class.start + (q + 1) * class.units;
-        let end = if c.is_none() {
-            (round + 1) * Self::TOTAL
-        } else {
-            end
+        let q = (u.saturating_sub(class.start) / class.units).min(class.len as u64 - 1);
+        let seed = seed ^ class.first.wrapping_mul(0x9e37_79b9);
+        let point = super::sampler::permute(q as u32, class.len, seed);
+        // Past the last class (rounding left the line's end short of TOTAL): to the end.
+        let end = match c {
+            Some(_) => round * Self::TOTAL + class.start + (q + 1) * class.units,
+            None => (round + 1) * Self::TOTAL,
         };
-        (
-            Stretch {
-                point,
-                units: class.units,
-            },
-            end,
-        )
+        (self.points[(class.first + point) as usize], end)
     }
 }
 
@@ -376,7 +361,7 @@ impl PreparedArea {
     ) -> (DVec3, f64) {
         let (i, j) = ((point % self.size1) as usize, (point / self.size1) as usize);
         let weight = cell_weight(&self.cdf1, i) * cell_weight(&self.cdf2, j);
-        (self.grid_point(frame, i, j, jitter), weight)
+        (self.point_at(frame, point, jitter), weight)
     }
 
     /// The light's centre and axes as seen from one shading point (`towards` points from it
@@ -607,9 +592,9 @@ mod tests {
             let mut seen = vec![0u64; (n1 * n2) as usize];
             let mut at = 0;
             while at < WeightOrder::TOTAL {
-                let (stretch, end) = order.stretch_at(at, 12345);
+                let (point, end) = order.stretch_at(at, 12345);
                 assert!(end > at);
-                seen[stretch.point as usize] += end - at;
+                seen[point as usize] += end - at;
                 at = end;
             }
             assert_eq!(at, WeightOrder::TOTAL, "{n1}x{n2}");

@@ -487,7 +487,7 @@ fn cover_grid(
     let mut at = start;
     while at < end {
         let round = (at / WeightOrder::TOTAL) as u32;
-        let (stretch, stretch_end) = area
+        let (point, stretch_end) = area
             .order
             .stretch_at(at, order ^ round.wrapping_mul(0x85eb_ca6b));
         let to = stretch_end.min(end);
@@ -496,7 +496,7 @@ fn cover_grid(
         } else {
             (0.5, 0.5)
         };
-        sum += shadow_to(area.point_at(&frame, stretch.point, offset)) * (to - at) as f64;
+        sum += shadow_to(area.point_at(&frame, point, offset)) * (to - at) as f64;
         at = to;
     }
     sum * (f64::from(n) / line as f64)
