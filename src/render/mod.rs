@@ -553,7 +553,7 @@ fn neighbour_noise(pilot: &Film) -> Vec<f64> {
     around(pilot.width, pilot.height)
         .enumerate()
         .map(|(i, near)| {
-            let others = near.into_iter().filter(|&j| j != i);
+            let others = near.filter(|&j| j != i);
             others.map(|j| sigma[j]).fold(0.0, f64::max)
         })
         .collect()
@@ -568,7 +568,7 @@ fn neighbour_change(pilot: &Film) -> Vec<f64> {
         .enumerate()
         .map(|(i, near)| {
             let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-            for v in near.into_iter().filter(|&j| j != i).map(|j| values[j]) {
+            for v in near.filter(|&j| j != i).map(|j| values[j]) {
                 for c in 0..3 {
                     lo[c] = lo[c].min(v[c]);
                     hi[c] = hi[c].max(v[c]);
@@ -586,7 +586,7 @@ fn neighbour_cost(work: &[PixelWork], w: usize) -> Vec<f64> {
         .enumerate()
         .map(|(i, near)| {
             let (mut rays, mut count) = (0.0, 0.0);
-            for j in near.into_iter().filter(|&j| j != i) {
+            for j in near.filter(|&j| j != i) {
                 rays += f64::from(work[j].rays);
                 count += 1.0;
             }
@@ -610,12 +610,12 @@ fn window_sums(values: &[u32], w: usize, r: usize) -> Vec<u32> {
 
 /// For each pixel of a w x h image in row-major order, the indices of the pixels of the
 /// 3 x 3 block around it (fewer at the borders), itself included.
-fn around(w: usize, h: usize) -> impl Iterator<Item = Vec<usize>> {
+fn around(w: usize, h: usize) -> impl Iterator<Item = impl Iterator<Item = usize>> {
     (0..w * h).map(move |i| {
         let (x, y) = (i % w, i / w);
+        let columns = x.saturating_sub(1)..(x + 2).min(w);
         let rows = y.saturating_sub(1)..(y + 2).min(h);
-        rows.flat_map(|yy| (x.saturating_sub(1)..(x + 2).min(w)).map(move |xx| yy * w + xx))
-            .collect()
+        rows.flat_map(move |yy| columns.clone().map(move |xx| yy * w + xx))
     })
 }
 
