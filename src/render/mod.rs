@@ -785,25 +785,7 @@ fn render_indices(
     let (batch, batches) = photons.map_or((0, 1), |p| p.number);
     let total = tiles.len() as u64 * batches;
     let done = AtomicU64::new(tiles.len() as u64 * batch);
-    let fixed = match plan {
-        SamplePlan::Uniform {
-            fixed_light: Some(k),
-            ..
-        } => *k,
-        _ => 1,
-    };
-    let one_ray_options = RenderOptions {
-        light_samples: LightSamples::Fixed(fixed),
-        ..options.clone()
-    };
-    let (mut integrator, mut one_ray_integrator) = (
-        Integrator::new(scene, options),
-        Integrator::new(scene, &one_ray_options),
-    );
-    if let Some(p) = photons {
-        integrator = integrator.with_photons(p.maps);
-        one_ray_integrator = one_ray_integrator.with_photons(p.maps);
-    }
+    let (integrator, one_ray_integrator) = pass_integrators(scene, options, plan, photons);
     let layout = *integrator.layout();
     let new_sampler = |spp: u32| {
         if options.stratified {
@@ -877,6 +859,15 @@ fn render_indices(
         (sums, work, counts, non_finite)
     };
     let results: Vec<_> = tiles.par_iter().map(render_tile).collect();
+    assemble(&tiles, results, w, h)
+}
+
+/// What one tile of a pass leaves: its pixels' sums and work, row by row, its rays, and
+/// its non-finite samples.
+type TileResult = (Vec<PixelSum>, Vec<PixelWork>, RayCounts, Vec<(u32, u32)>);
+
+/// The pass's film and work from its tiles', in the tiles' fixed order.
+fn assemble(tiles: &[(usize, usize)], results: Vec<TileResult>, w: usize, h: usize) -> PassOutput {
     let mut out = PassOutput {
         film: Film::new(w, h),
         rays: RayCounts::default(),
@@ -893,6 +884,37 @@ fn render_indices(
         out.film.non_finite.extend(non_finite);
     }
     out
+}
+
+/// The pass's two integrators: the render's own, and one with a fixed number of shadow rays
+/// per area light (the adaptive pilot's, or one for one-ray pixels), with the batch's
+/// photons.
+fn pass_integrators<'s>(
+    scene: &'s PreparedScene,
+    options: &RenderOptions,
+    plan: &SamplePlan,
+    photons: Option<&PhotonBatch<'s>>,
+) -> (Integrator<'s>, Integrator<'s>) {
+    let fixed = match plan {
+        SamplePlan::Uniform {
+            fixed_light: Some(k),
+            ..
+        } => *k,
+        _ => 1,
+    };
+    let fixed_options = RenderOptions {
+        light_samples: LightSamples::Fixed(fixed),
+        ..options.clone()
+    };
+    let (mut own, mut fixed) = (
+        Integrator::new(scene, options),
+        Integrator::new(scene, &fixed_options),
+    );
+    if let Some(p) = photons {
+        own = own.with_photons(p.maps);
+        fixed = fixed.with_photons(p.maps);
+    }
+    (own, fixed)
 }
 
 #[cfg(test)]
