@@ -132,8 +132,9 @@ pub enum LightSamples {
     /// This many, spread over the light from the sample's stratified position.
     Fixed(u32),
     /// With POV-Ray's grid (`--area-lights pov`), as many as it takes for a pixel's samples
-    /// together to test every grid point: POV-Ray's shadow rays per pixel, shared among the
-    /// pixel's samples instead of spent on each. Otherwise one.
+    /// together to test every grid point, by weight, once for every [`COVER_SHARED`] of
+    /// them: POV-Ray's shadow rays per pixel, shared among the pixel's samples instead of
+    /// spent on each (`cover_grid` in the integrator). Otherwise one.
     Cover,
 }
 

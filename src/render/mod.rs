@@ -493,7 +493,9 @@ struct PixelPlan {
     spp: u32,
     range: Range<u32>,
     seed: u64,
-    one_ray: bool,
+    /// Shade with the pass's fixed-count integrator (one shadow ray per area light, or the
+    /// pilot's [`PILOT_LIGHT_RAYS`]) instead of the render's own light sampling.
+    fixed_light: bool,
 }
 
 impl SamplePlan<'_> {
@@ -526,7 +528,7 @@ impl SamplePlan<'_> {
                     spp: *spp,
                     range: range.start.max(first + done)..range.end,
                     seed: *seed,
-                    one_ray: fixed_light.is_some(),
+                    fixed_light: fixed_light.is_some(),
                 }
             }
             SamplePlan::PerPixel {
@@ -538,7 +540,7 @@ impl SamplePlan<'_> {
                 spp: counts[i].max(1),
                 range: 0..counts[i],
                 seed: *seed,
-                one_ray: one_ray[i],
+                fixed_light: one_ray[i],
             },
         }
     }
@@ -785,7 +787,7 @@ fn render_indices(
     let (batch, batches) = photons.map_or((0, 1), |p| p.number);
     let total = tiles.len() as u64 * batches;
     let done = AtomicU64::new(tiles.len() as u64 * batch);
-    let (integrator, one_ray_integrator) = pass_integrators(scene, options, plan, photons);
+    let (integrator, fixed_integrator) = pass_integrators(scene, options, plan, photons);
     let layout = *integrator.layout();
     let new_sampler = |spp: u32| {
         if options.stratified {
@@ -806,7 +808,7 @@ fn render_indices(
                     spp,
                     range,
                     seed,
-                    one_ray,
+                    fixed_light,
                 } = plan.pixel(y * w + x);
                 let range = match photons {
                     Some(p) => range.start.max(p.indices.start)..range.end.min(p.indices.end),
@@ -820,8 +822,8 @@ fn render_indices(
                 if sampler.samples_per_pixel() != spp {
                     sampler = new_sampler(spp);
                 }
-                let integrator = if one_ray {
-                    &one_ray_integrator
+                let integrator = if fixed_light {
+                    &fixed_integrator
                 } else {
                     &integrator
                 };

@@ -634,8 +634,8 @@ mod tests {
         assert!(layer(&finish).highlight(&at(off), DVec3::ONE).is_none());
     }
 
-    /// A light of `n1` x `n2` points, a query at the origin below it, and for each point of
-    /// the grid (by index) whether its shadow ray is blocked, with POV-Ray's grid sum.
+    /// An area light of `n1` x `n2` points, 4 x 4 units, 10 above the origin (where the
+    /// queries of `cover_samples` shade).
     fn grid_light(n1: u32, n2: u32, circular: bool) -> PreparedLight {
         let mut light = crate::scene::Light::point(DVec3::new(0.0, 10.0, 0.0), DVec3::ONE);
         light.area = Some(crate::scene::AreaLight {

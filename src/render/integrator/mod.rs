@@ -54,7 +54,8 @@ pub struct RayCounts {
     pub shadow: u64,
     pub secondary: u64,
     /// Shadow rays towards area lights that arrived (wholly or in part) and that were
-    /// stopped (wholly or in part): where a pixel has both, it sees a penumbra.
+    /// stopped (wholly or in part): where pixels close together have both, they see a
+    /// penumbra (adaptive sampling's pilot reads them per pixel).
     pub area_lit: u64,
     pub area_shadowed: u64,
 }
