@@ -54,7 +54,10 @@ pub fn summary(scene: &scene::Scene) -> String {
     fn count(objects: &[scene::Object]) -> usize {
         objects
             .iter()
-            .map(|o| 1 + o.shape.children().map_or(0, count))
+            .map(|o| match &o.shape {
+                scene::Shape::Instance(shared) => count(std::slice::from_ref(&**shared)),
+                shape => 1 + shape.children().map_or(0, count),
+            })
             .sum()
     }
     let area = scene.lights.iter().filter(|l| l.area.is_some()).count();

@@ -311,6 +311,24 @@ struct BenchArgs {
     /// spheres scene rendered by penumbra and by POV-Ray, time and peak memory of each.
     #[arg(long)]
     pipeline: bool,
+    /// Only the forest section: scenes/forest.pov (a declared tree placed Trees x Trees
+    /// times) at each TREESxPARTS size, rendered by penumbra and by POV-Ray, time and peak
+    /// memory of each.
+    #[arg(long, value_delimiter = ',', value_name = "TREESxPARTS", value_parser = parse_forest)]
+    forest: Vec<(usize, usize)>,
+}
+
+/// `100x1000`: a forest of 100 x 100 trees of 1000 objects each.
+fn parse_forest(s: &str) -> Result<(usize, usize), String> {
+    let (trees, parts) = s
+        .split_once('x')
+        .ok_or_else(|| format!("`{s}`: expected TREESxPARTS, for example 100x1000"))?;
+    let number = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .map_err(|e| format!("`{s}`: `{t}` is not a count ({e})"))
+    };
+    Ok((number(trees)?, number(parts)?))
 }
 
 #[derive(clap::Args)]
@@ -808,6 +826,14 @@ fn bench(args: BenchArgs) -> Result<ExitCode, String> {
     }
     if args.shapes {
         penumbra::study::bench::shape_lines(args.rays, &mut |line| println!("{line}"));
+        return Ok(ExitCode::SUCCESS);
+    }
+    if !args.forest.is_empty() {
+        let exe = std::env::current_exe().map_err(text)?;
+        let size = (args.width, args.height);
+        penumbra::study::pipeline_bench::forest(&args.forest, &exe, size, |line| {
+            println!("{line}");
+        });
         return Ok(ExitCode::SUCCESS);
     }
     if args.pipeline {

@@ -2,6 +2,8 @@
 //! over the bounded top-level items, and the unbounded ones (planes, quadrics, inverses)
 //! kept aside.
 
+use std::sync::Arc;
+
 use glam::{DVec2, DVec3};
 
 use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform};
@@ -22,9 +24,36 @@ pub mod flags {
     pub const PHOTON_PASS: u8 = 64;
 }
 
+mod instance;
+
+pub use instance::Instance;
+
 const NO_TRANSFORM: u32 = u32::MAX;
-/// Items (what the BVH and CSG nodes refer to) are primitives, or CSG nodes with this bit.
+/// Items (what the BVH and CSG nodes refer to) are primitives, CSG nodes with this bit, or
+/// instances with [`INSTANCE_BIT`].
 const CSG_BIT: u32 = 1 << 31;
+const INSTANCE_BIT: u32 = 1 << 30;
+/// A hit on the world's own primitives, not inside an instance.
+pub const NO_INSTANCE: u32 = u32::MAX;
+
+/// What an item number names.
+#[derive(Clone, Copy)]
+enum Ref {
+    Primitive(usize),
+    Csg(usize),
+    Instance(usize),
+}
+
+#[inline]
+fn decode(item: u32) -> Ref {
+    if item & CSG_BIT != 0 {
+        Ref::Csg((item & !CSG_BIT) as usize)
+    } else if item & INSTANCE_BIT != 0 {
+        Ref::Instance((item & !INSTANCE_BIT) as usize)
+    } else {
+        Ref::Primitive(item as usize)
+    }
+}
 
 /// What the render-ready scene takes per primitive at its peak (while its BVH is built):
 /// the primitive, its bounds and the tree's share. The scene language charges each object
@@ -92,6 +121,8 @@ pub struct Hit {
     /// The surface's outward side is reversed (the subtracted part of a difference, or an
     /// inverse object).
     pub flipped: bool,
+    /// The instance whose prototype holds `primitive` ([`NO_INSTANCE`]: the world's own).
+    pub instance: u32,
 }
 
 /// Where a ray met a surface, in world space.
@@ -164,6 +195,7 @@ pub struct World {
     unbounded: Vec<u32>,
     /// The bounds of the objects photons are shot at (`photons { target }`).
     photon_targets: Vec<Aabb>,
+    instances: Vec<Instance>,
 }
 
 /// Collects primitives and CSG nodes, then builds the BVH over the top-level items.
@@ -175,6 +207,7 @@ pub struct WorldBuilder {
     csg: Vec<CsgNode>,
     top: Vec<Item>,
     targets: Vec<Item>,
+    instances: Vec<Instance>,
 }
 
 impl WorldBuilder {
@@ -212,6 +245,14 @@ impl WorldBuilder {
         Item((self.csg.len() - 1) as u32 | CSG_BIT)
     }
 
+    /// A prototype's world placed by `transform` (prototype to world), its materials
+    /// numbered from `materials` on.
+    pub fn instance(&mut self, world: Arc<World>, transform: Transform, materials: u32) -> Item {
+        self.instances
+            .push(Instance::new(world, transform, materials));
+        Item((self.instances.len() - 1) as u32 | INSTANCE_BIT)
+    }
+
     /// Makes an item part of the scene (not only a CSG child).
     pub fn add_top(&mut self, item: Item) {
         self.top.push(item);
@@ -231,6 +272,7 @@ impl WorldBuilder {
             bvh: Bvh::default(),
             unbounded: Vec::new(),
             photon_targets: Vec::new(),
+            instances: self.instances,
         };
         world.index_csg_children();
         world.photon_targets = self
@@ -358,11 +400,14 @@ impl World {
 
     /// Whether the item is or holds a `bounded_by` node.
     fn holds_bound(&self, item: u32) -> bool {
-        if item & CSG_BIT == 0 {
-            return false;
+        match decode(item) {
+            Ref::Primitive(_) => false,
+            Ref::Instance(k) => self.instances[k].holds_bound(),
+            Ref::Csg(k) => {
+                let node = &self.csg[k];
+                node.op == CsgOp::Bound || node.children.iter().any(|&c| self.holds_bound(c))
+            }
         }
-        let node = &self.csg[(item & !CSG_BIT) as usize];
-        node.op == CsgOp::Bound || node.children.iter().any(|&c| self.holds_bound(c))
     }
 
     /// Whether an indexed child other than the one at `except` holds `p`.
@@ -385,7 +430,7 @@ impl World {
         let mut new_index = vec![u32::MAX; n];
         let mut placed = 0u32;
         for &item in &self.bvh.items {
-            if item & CSG_BIT == 0 && new_index[item as usize] == u32::MAX {
+            if matches!(decode(item), Ref::Primitive(_)) && new_index[item as usize] == u32::MAX {
                 new_index[item as usize] = placed;
                 placed += 1;
             }
@@ -397,8 +442,8 @@ impl World {
         // In place: a reordered copy would double the largest array at the peak.
         permute(&mut self.primitives, &mut new_index.clone());
         let remap = |item: &mut u32| {
-            if *item & CSG_BIT == 0 {
-                *item = new_index[*item as usize];
+            if let Ref::Primitive(i) = decode(*item) {
+                *item = new_index[i];
             }
         };
         self.bvh.items.iter_mut().for_each(remap);
@@ -417,13 +462,16 @@ impl World {
         self.primitives.len()
     }
 
-    /// Bytes held by the geometry's arrays (primitives, transforms, shape tables' headers,
-    /// CSG nodes, BVH nodes and item list), for the benchmark's memory per object.
     /// Warnings about isosurfaces steeper than their max_gradient, after a render.
     pub fn gradient_notes(&self) -> Vec<String> {
-        self.tables.gradient_notes()
+        let mut notes = self.tables.gradient_notes();
+        notes.extend(self.prototypes().flat_map(World::gradient_notes));
+        notes
     }
 
+    /// Bytes held by the geometry's arrays (primitives, transforms, shape tables' headers,
+    /// CSG nodes, BVH nodes and item list, instances and their prototypes once), for the
+    /// benchmark's memory per object.
     pub fn memory_bytes(&self) -> usize {
         use std::mem::size_of;
         self.primitives.capacity() * size_of::<Primitive>()
@@ -438,21 +486,35 @@ impl World {
             + self.bvh.items.capacity() * 4
             + self.unbounded.capacity() * 4
             + self.tables.memory_bytes()
+            + self.instances.capacity() * size_of::<Instance>()
+            + self.prototypes().map(World::memory_bytes).sum::<usize>()
+    }
+
+    /// Each prototype the instances share, once.
+    fn prototypes(&self) -> impl Iterator<Item = &World> {
+        let mut seen = std::collections::HashSet::new();
+        self.instances
+            .iter()
+            .map(|i| &**i.prototype())
+            .filter(move |w| seen.insert(*w as *const World))
+    }
+
+    /// The instances placed in the scene (not counting their prototypes' primitives).
+    pub fn instance_count(&self) -> usize {
+        self.instances.len()
+    }
+
+    /// Whether the world holds textured blobs, whose blend reads this world's own tables.
+    pub fn has_textured_blobs(&self) -> bool {
+        self.tables.blobs.iter().any(|b| b.textured)
     }
 
     fn item_bounds(&self, item: u32) -> Option<Aabb> {
-        if item & CSG_BIT == 0 {
-            let p = &self.primitives[item as usize];
-            if p.flags & flags::INVERSE != 0 {
-                return None;
-            }
-            let b = p.shape.bounds(&self.tables)?;
-            return Some(match p.transform {
-                NO_TRANSFORM => b,
-                t => b.transformed(&self.transforms[t as usize]),
-            });
-        }
-        let node = &self.csg[(item & !CSG_BIT) as usize];
+        let node = match decode(item) {
+            Ref::Primitive(i) => return self.primitive_bounds(&self.primitives[i]),
+            Ref::Instance(k) => return self.instances[k].bounds(),
+            Ref::Csg(k) => &self.csg[k],
+        };
         if node.inverse {
             return None;
         }
@@ -497,6 +559,17 @@ impl World {
         }
     }
 
+    fn primitive_bounds(&self, p: &Primitive) -> Option<Aabb> {
+        if p.flags & flags::INVERSE != 0 {
+            return None;
+        }
+        let b = p.shape.bounds(&self.tables)?;
+        Some(match p.transform {
+            NO_TRANSFORM => b,
+            t => b.transformed(&self.transforms[t as usize]),
+        })
+    }
+
     #[inline]
     fn local_ray(&self, p: &Primitive, ray: &Ray) -> Ray {
         if p.transform == NO_TRANSFORM {
@@ -510,20 +583,25 @@ impl World {
     /// The nearest hit of one item in (0, t_max).
     #[inline]
     fn item_hit(&self, item: u32, ray: &Ray, t_max: f64, skip: u8) -> Option<Hit> {
-        if item & CSG_BIT == 0 {
-            let p = &self.primitives[item as usize];
-            if p.flags & skip != 0 {
-                return None;
+        match decode(item) {
+            Ref::Primitive(i) => {
+                let p = &self.primitives[i];
+                if p.flags & skip != 0 {
+                    return None;
+                }
+                let (t, part) =
+                    p.shape
+                        .intersect_part(&self.local_ray(p, ray), t_max, &self.tables)?;
+                return Some(Hit {
+                    t,
+                    primitive: item,
+                    part,
+                    flipped: p.flags & flags::INVERSE != 0,
+                    instance: NO_INSTANCE,
+                });
             }
-            let (t, part) = p
-                .shape
-                .intersect_part(&self.local_ray(p, ray), t_max, &self.tables)?;
-            return Some(Hit {
-                t,
-                primitive: item,
-                part,
-                flipped: p.flags & flags::INVERSE != 0,
-            });
+            Ref::Instance(k) => return self.instances[k].hit(k as u32, ray, t_max, skip),
+            Ref::Csg(_) => {}
         }
         let mut best: Option<Hit> = None;
         let mut t_best = t_max;
@@ -538,26 +616,13 @@ impl World {
 
     /// Every visible surface crossing of an item in (0, t_max), in no particular order.
     fn for_each_hit(&self, item: u32, ray: &Ray, t_max: f64, skip: u8, f: &mut dyn FnMut(Hit)) {
-        if item & CSG_BIT == 0 {
-            let p = &self.primitives[item as usize];
-            if p.flags & skip != 0 {
-                return;
+        let node = match decode(item) {
+            Ref::Primitive(i) => return self.primitive_hits(i, ray, t_max, skip, f),
+            Ref::Instance(k) => {
+                return self.instances[k].for_each_hit(k as u32, ray, t_max, skip, f);
             }
-            let flipped = p.flags & flags::INVERSE != 0;
-            p.shape
-                .each_hit_part(&self.local_ray(p, ray), &self.tables, |t, part| {
-                    if t > 0.0 && t < t_max {
-                        f(Hit {
-                            t,
-                            primitive: item,
-                            part,
-                            flipped,
-                        });
-                    }
-                });
-            return;
-        }
-        let node = &self.csg[(item & !CSG_BIT) as usize];
+            Ref::Csg(k) => &self.csg[k],
+        };
         if node.op == CsgOp::Bound {
             if self.ray_meets_bounds(&node.children[1..], ray) {
                 self.for_each_hit(node.children[0], ray, t_max, skip, f);
@@ -590,6 +655,26 @@ impl World {
             None if node.op == CsgOp::Clip => visit(0, f),
             None => (0..node.children.len()).for_each(|i| visit(i, f)),
         }
+    }
+
+    fn primitive_hits(&self, i: usize, ray: &Ray, t_max: f64, skip: u8, f: &mut dyn FnMut(Hit)) {
+        let p = &self.primitives[i];
+        if p.flags & skip != 0 {
+            return;
+        }
+        let flipped = p.flags & flags::INVERSE != 0;
+        p.shape
+            .each_hit_part(&self.local_ray(p, ray), &self.tables, |t, part| {
+                if t > 0.0 && t < t_max {
+                    f(Hit {
+                        t,
+                        primitive: i as u32,
+                        part,
+                        flipped,
+                        instance: NO_INSTANCE,
+                    });
+                }
+            });
     }
 
     /// Whether a hit at `p` on the child at `i` is on the node's surface, from where `p`
@@ -629,10 +714,10 @@ impl World {
     /// a triangle shows only the triangle's part in the box, as box and triangle
     /// intersected do).
     fn has_inside(&self, item: u32) -> bool {
-        if item & CSG_BIT != 0 {
+        let Ref::Primitive(i) = decode(item) else {
             return true;
-        }
-        match self.primitives[item as usize].shape {
+        };
+        match self.primitives[i].shape {
             ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
             ShapeKind::Mesh(i) => self.tables.meshes[i as usize].inside_vector.is_some(),
             _ => true,
@@ -641,18 +726,18 @@ impl World {
 
     /// Whether a world point is inside an item's solid.
     pub fn inside(&self, item: u32, p: DVec3) -> bool {
-        if item & CSG_BIT == 0 {
-            if !self.has_inside(item) {
-                return false;
+        let node = match decode(item) {
+            Ref::Primitive(i) => {
+                if !self.has_inside(item) {
+                    return false;
+                }
+                let prim = &self.primitives[i];
+                let local = self.local_point(prim, p);
+                return prim.shape.inside(local, &self.tables) ^ (prim.flags & flags::INVERSE != 0);
             }
-            let prim = &self.primitives[item as usize];
-            let local = match prim.transform {
-                NO_TRANSFORM => p,
-                t => self.transforms[t as usize].inverse_point(p),
-            };
-            return prim.shape.inside(local, &self.tables) ^ (prim.flags & flags::INVERSE != 0);
-        }
-        let node = &self.csg[(item & !CSG_BIT) as usize];
+            Ref::Instance(k) => return self.instances[k].holds(p),
+            Ref::Csg(k) => &self.csg[k],
+        };
         if let Some(index) = &node.index {
             let any = self.indexed_child_holds(node, index, p, usize::MAX);
             let inside = match node.op {
@@ -687,20 +772,38 @@ impl World {
     /// The materials of the top-level items whose solid holds `p` (for a CSG item, its first
     /// primitive's): where the camera starts, as POV-Ray's interior list does.
     pub fn containing(&self, p: DVec3) -> impl Iterator<Item = u32> + '_ {
-        self.bvh
-            .items
-            .iter()
-            .chain(&self.unbounded)
-            .filter(move |&&item| self.inside(item, p))
-            .filter_map(|&item| self.first_material(item))
+        let mut materials = Vec::new();
+        for &item in self.bvh.items.iter().chain(&self.unbounded) {
+            match decode(item) {
+                Ref::Instance(k) => materials.extend(self.instances[k].containing(p)),
+                _ if self.inside(item, p) => materials.extend(self.first_material(item)),
+                _ => {}
+            }
+        }
+        materials.into_iter()
     }
 
     fn first_material(&self, item: u32) -> Option<u32> {
-        if item & CSG_BIT == 0 {
-            return Some(self.primitives[item as usize].material);
+        match decode(item) {
+            Ref::Primitive(i) => Some(self.primitives[i].material),
+            Ref::Instance(k) => self.instances[k].first_material(),
+            Ref::Csg(k) => self.csg[k]
+                .children
+                .first()
+                .and_then(|&c| self.first_material(c)),
         }
-        let node = &self.csg[(item & !CSG_BIT) as usize];
-        node.children.first().and_then(|&c| self.first_material(c))
+    }
+
+    /// The first material of the first top-level item.
+    fn top_material(&self) -> Option<u32> {
+        let first = self.bvh.items.first().or(self.unbounded.first())?;
+        self.first_material(*first)
+    }
+
+    /// Whether any top-level item's solid holds `p`.
+    fn holds(&self, p: DVec3) -> bool {
+        self.unbounded.iter().any(|&i| self.inside(i, p))
+            || self.bvh.any_containing(p, |i| self.inside(i, p))
     }
 
     /// The nearest hit in (0, t_max), ignoring primitives with any of the `skip` flags.
@@ -735,15 +838,16 @@ impl World {
     /// Whether anything that casts shadows lies on the ray within (0, t_max); stops at the
     /// first hit.
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
-        let skip = flags::NO_SHADOW;
-        for &i in &self.unbounded {
-            if self.item_hit(i, ray, t_max, skip).is_some() {
-                return true;
-            }
+        if self
+            .unbounded
+            .iter()
+            .any(|&i| self.item_blocks(i, ray, t_max))
+        {
+            return true;
         }
         let mut hit = false;
         self.bvh.traverse(ray, t_max, |i, t_cur| {
-            if self.item_hit(i, ray, t_cur, skip).is_some() {
+            if self.item_blocks(i, ray, t_cur) {
                 hit = true;
                 return None;
             }
@@ -752,12 +856,33 @@ impl World {
         hit
     }
 
+    /// Whether an item casts a shadow on the ray within (0, t_max).
+    #[inline]
+    fn item_blocks(&self, item: u32, ray: &Ray, t_max: f64) -> bool {
+        match decode(item) {
+            Ref::Instance(k) => self.instances[k].blocks(ray, t_max),
+            _ => self.item_hit(item, ray, t_max, flags::NO_SHADOW).is_some(),
+        }
+    }
+
     /// Visits every shadow-casting surface crossing on the ray within (0, t_max), in no
     /// particular order, until `visit` returns false (the light is fully blocked). Returns
     /// whether the walk ran to the end. Shadow rays through filtering objects need every
     /// crossing, not only the nearest.
     pub fn shadow_hits(&self, ray: &Ray, t_max: f64, mut visit: impl FnMut(&Hit) -> bool) -> bool {
-        let skip = flags::NO_SHADOW;
+        self.crossings(ray, t_max, flags::NO_SHADOW, &mut visit)
+    }
+
+    /// Visits every surface crossing on the ray within (0, t_max) but those with any of
+    /// the `skip` flags, until `visit` returns false; returns whether the walk ran to the
+    /// end.
+    fn crossings(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        skip: u8,
+        visit: &mut dyn FnMut(&Hit) -> bool,
+    ) -> bool {
         let mut open = true;
         let mut each = |item: u32| {
             self.for_each_hit(item, ray, t_max, skip, &mut |hit| {
@@ -787,6 +912,9 @@ impl World {
     /// The material at a hit: the primitive's, or the face's on a mesh with textures per
     /// face (the first corner's where the corners differ).
     pub fn hit_material(&self, hit: &Hit) -> u32 {
+        if let Some(instance) = self.instances.get(hit.instance as usize) {
+            return instance.hit_material(hit);
+        }
         let p = &self.primitives[hit.primitive as usize];
         match p.shape {
             ShapeKind::Mesh(i) => self.tables.meshes[i as usize]
@@ -854,6 +982,9 @@ impl World {
     }
 
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfacePoint {
+        if let Some(instance) = self.instances.get(hit.instance as usize) {
+            return instance.surface(ray, hit);
+        }
         let p = &self.primitives[hit.primitive as usize];
         let point = ray.at(hit.t);
         let local = self.local_point(p, point);
@@ -888,6 +1019,9 @@ impl World {
 
     /// The texture lookup point of a hit, without the normals `surface` computes.
     pub fn texture_point(&self, ray: &Ray, hit: &Hit) -> TexturePoint {
+        if let Some(instance) = self.instances.get(hit.instance as usize) {
+            return instance.texture_point(ray, hit);
+        }
         let point = ray.at(hit.t);
         TexturePoint {
             world: point,

@@ -322,6 +322,7 @@ pub fn check_summary(loaded: &Loaded) -> String {
             crate::scene::Shape::Merge(_) => "merge",
             crate::scene::Shape::Intersection(_) => "intersection",
             crate::scene::Shape::Difference(_) => "difference",
+            crate::scene::Shape::Instance(_) => "shared object",
         };
         *features.entry(name).or_default() += 1;
         if !o.clipped_by().is_empty() {
@@ -332,6 +333,9 @@ pub fn check_summary(loaded: &Loaded) -> String {
         }
         for child in o.shape.children().unwrap_or(&[]) {
             visit(child, features);
+        }
+        if let crate::scene::Shape::Instance(shared) = &o.shape {
+            visit(shared, features);
         }
         for clip in o.clipped_by() {
             visit(clip, features);

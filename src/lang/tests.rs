@@ -237,11 +237,9 @@ fn image_map_keeps_its_warps() {
 }
 
 /// A 3.7 scene sees an image's linear colour whatever its assumed_gamma; an older
-/// `#version` takes the file's values as working colours (POV-Ray 3.7.0.10, grey 128:
-/// 0.2158 in 3.7 scenes; 0.5020 (`assumed_gamma 1`) and 0.2195 = 0.502^2.2
-/// (`assumed_gamma 2.2`) written by 3.6 scenes, which is drums2/drums.pov's backdrop).
-#[test]
-fn image_values_follow_the_version_and_gamma() {
+/// The value a 1x1 grey-128 PNG shows at its centre in a scene with `header`, its image
+/// block ending with `extra`.
+fn grey_128(header: &str, extra: &str) -> f64 {
     use crate::appearance::pigment::evaluate_pigment;
     use glam::DVec3;
     let dir = crate::study::TempDir::new("image-gamma").unwrap();
@@ -249,33 +247,59 @@ fn image_values_follow_the_version_and_gamma() {
         .save(dir.path().join("grey.png"))
         .unwrap();
     let scene_path = dir.path().join("scene.pov").display().to_string();
-    let grey = |header: &str| {
-        let source =
-            format!("{header}\nplane {{ z, 0 pigment {{ image_map {{ png \"grey.png\" }} }} }}");
-        let loaded = load_inner(
-            &scene_path,
-            &source,
-            &LoadOptions::default(),
-            &FileSystem,
-            false,
-        )
-        .unwrap();
-        let pigment = &loaded.scene.objects[0].texture.as_ref().unwrap().pigment;
-        evaluate_pigment(pigment, DVec3::new(0.5, 0.5, 0.0)).rgb.x
-    };
+    let source = format!(
+        "{header}\nplane {{ z, 0 pigment {{ image_map {{ png \"grey.png\" {extra} }} }} }}"
+    );
+    let loaded = load_inner(
+        &scene_path,
+        &source,
+        &LoadOptions::default(),
+        &FileSystem,
+        false,
+    )
+    .unwrap();
+    let pigment = &loaded.scene.objects[0].texture.as_ref().unwrap().pigment;
+    evaluate_pigment(pigment, DVec3::new(0.5, 0.5, 0.0)).rgb.x
+}
+
+fn assert_close(a: f64, b: f64) {
+    assert!((a - b).abs() < 1e-6, "{a} against {b}");
+}
+
+/// `#version` takes the file's values as working colours (POV-Ray 3.7.0.10, grey 128:
+/// 0.2158 in 3.7 scenes; 0.5020 (`assumed_gamma 1`) and 0.2195 = 0.502^2.2
+/// (`assumed_gamma 2.2`) written by 3.6 scenes, which is drums2/drums.pov's backdrop).
+#[test]
+fn image_values_follow_the_version_and_gamma() {
+    let grey = |header: &str| grey_128(header, "");
     let linear = ((128.0 / 255.0 + 0.055) / 1.055f64).powf(2.4);
-    let close = |a: f64, b: f64| assert!((a - b).abs() < 1e-6, "{a} against {b}");
-    close(
+    assert_close(
         grey("#version 3.7; global_settings { assumed_gamma 1 }"),
         linear,
     );
-    close(
+    assert_close(
         grey("#version 3.7; global_settings { assumed_gamma 2.2 }"),
         linear.powf(1.0 / 2.2),
     );
-    close(
+    assert_close(
         grey("#version 3.6; global_settings { assumed_gamma 2.2 }"),
         128.0 / 255.0,
     );
-    close(grey("#version 3.6;"), 128.0 / 255.0);
+    assert_close(grey("#version 3.6;"), 128.0 / 255.0);
+}
+
+/// An image block's `gamma` is the file's encoding (POV-Ray 3.7.0.10, grey 128 written
+/// linear: 0.2196 with `gamma 2.2`, 0.2902 with `gamma 1.8`, 0.5020 with `gamma 1`, the
+/// sRGB curve's 0.2157 with `gamma srgb`).
+#[test]
+fn an_image_gamma_decodes_the_file() {
+    let v = 128.0 / 255.0f64;
+    let header = "#version 3.7; global_settings { assumed_gamma 1 }";
+    assert_close(grey_128(header, "gamma 2.2"), v.powf(2.2));
+    assert_close(grey_128(header, "gamma 1.8"), v.powf(1.8));
+    assert_close(grey_128(header, "gamma 1"), v);
+    assert_close(grey_128(header, "gamma srgb"), grey_128(header, ""));
+    // Working in gamma 2.2: decoded, then encoded for the working space.
+    let header = "#version 3.7; global_settings { assumed_gamma 2.2 }";
+    assert_close(grey_128(header, "gamma 1.8"), v.powf(1.8 / 2.2));
 }

@@ -2,6 +2,8 @@
 //! transforms, CSG nodes and a BVH, each primitive pointing at its material, plus lights
 //! prepared for sampling.
 
+use std::collections::HashMap;
+use std::rc::Rc;
 use std::sync::Arc;
 
 use glam::{DAffine3, DVec2, DVec3};
@@ -113,15 +115,12 @@ impl PreparedScene {
     }
 
     pub fn new(scene: &Scene) -> PreparedScene {
-        let mut builder = Builder {
-            world: WorldBuilder::default(),
-            materials: Vec::new(),
-            shared: std::collections::HashMap::new(),
-            interior_ids: std::collections::HashMap::new(),
-            media: MediaTable::new(&scene.media),
-            photons: scene.settings.photons.is_some(),
-        };
         let default_texture = Arc::new(Texture::default());
+        let mut builder = Builder::new(
+            MediaTable::new(&scene.media),
+            scene.settings.photons.is_some(),
+            default_texture.clone(),
+        );
         let default_interior = Interior::default();
         let looks = Looks {
             texture: &default_texture,
@@ -216,12 +215,30 @@ struct Builder {
     world: WorldBuilder,
     materials: Vec<Material>,
     /// The materials primitives share, by what they hold.
-    shared: std::collections::HashMap<MaterialKey, u32>,
+    shared: HashMap<MaterialKey, u32>,
     /// Interior ids by owner (see Looks::interior_owner).
-    interior_ids: std::collections::HashMap<usize, u32>,
+    interior_ids: HashMap<usize, u32>,
     media: MediaTable,
     /// Whether the scene computes caustics with photons (global_settings photons).
     photons: bool,
+    /// The texture of objects without one, by address: an instance inherits nothing only
+    /// if its looks hold this one.
+    default_texture: Arc<Texture>,
+    /// The prototypes built so far, by the shared object's address (`None`: it is copied
+    /// instead, see [`Builder::prototype`]).
+    prototypes: HashMap<usize, Option<Rc<Prototype>>>,
+    /// Building a prototype: instances in it are copied (a prototype holds none).
+    in_prototype: bool,
+}
+
+/// A shared object's geometry and materials, built once. Each placement takes a copy of
+/// the materials with their textures moved into place (textures are evaluated in world
+/// space), numbered after the scene's.
+struct Prototype {
+    world: Arc<World>,
+    materials: Vec<Material>,
+    /// The interior its opaque materials share.
+    opaque_interior: Option<u32>,
 }
 
 fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
@@ -236,6 +253,22 @@ fn combine(f: ObjectFlags, inherited: ObjectFlags) -> ObjectFlags {
         no_radiosity: f.no_radiosity || inherited.no_radiosity,
         photons: f.photons.or(inherited.photons),
     }
+}
+
+/// A texture moved by a placement: a copy, unless it is the same everywhere.
+fn moved(texture: &Arc<Texture>, t: &Transform) -> Arc<Texture> {
+    fn uniform(t: &Texture) -> bool {
+        t.map.is_none()
+            && t.normal.is_none()
+            && matches!(t.pigment.kind, crate::scene::PigmentKind::Solid(_))
+            && t.below.iter().all(uniform)
+    }
+    if t.is_identity() || uniform(texture) {
+        return texture.clone();
+    }
+    let mut copy = (**texture).clone();
+    copy.transform_by(t);
+    Arc::new(copy)
 }
 
 /// The frame that takes the unit z axis to `from -> to` without scaling x and y.
@@ -314,6 +347,20 @@ struct Looks<'a> {
 }
 
 impl Builder {
+    fn new(media: MediaTable, photons: bool, default_texture: Arc<Texture>) -> Builder {
+        Builder {
+            world: WorldBuilder::default(),
+            materials: Vec::new(),
+            shared: HashMap::new(),
+            interior_ids: HashMap::new(),
+            media,
+            photons,
+            default_texture,
+            prototypes: HashMap::new(),
+            in_prototype: false,
+        }
+    }
+
     /// Adds an object; at the top level, unions dissolve into their children so the BVH sees
     /// each part. Returns the item for use as a CSG child.
     fn object(&mut self, object: &Object, inherited: Looks<'_>, top: bool) -> Option<Item> {
@@ -345,6 +392,14 @@ impl Builder {
             | Shape::Intersection(children)
             | Shape::Difference(children) => self.csg(&object.shape, children, looks)?,
             Shape::Mesh(mesh) => self.mesh(mesh, object, looks)?,
+            Shape::Instance(shared) => match self.placed(shared, object, looks) {
+                Some(item) => item,
+                None => {
+                    let mut copy = object.clone();
+                    copy.unshared();
+                    return self.object(&copy, inherited, top);
+                }
+            },
             Shape::Triangle(corners) => self.triangle(**corners, None, object, looks)?,
             Shape::SmoothTriangle(t) => self.triangle(t.corners, Some(t.normals), object, looks)?,
             shape => self.primitive(shape, object, looks)?,
@@ -371,6 +426,85 @@ impl Builder {
             }
         }
         Some(item)
+    }
+
+    /// A shared object placed by `object`'s transform, sharing its prototype's geometry;
+    /// `None` where it must be copied instead: it inherits looks from a parent (its
+    /// prototype's materials would differ per placement), or the scene shoots photons at
+    /// targets (which are top-level items), or the prototype cannot be shared.
+    fn placed(&mut self, shared: &Arc<Object>, object: &Object, looks: Looks<'_>) -> Option<Item> {
+        let plain = Arc::ptr_eq(looks.texture, &self.default_texture)
+            && looks.interior_texture.is_none()
+            && looks.interior_owner.is_none()
+            && looks.flags == ObjectFlags::default();
+        if !plain || self.in_prototype || self.photons {
+            return None;
+        }
+        let prototype = self.prototype(shared)?;
+        let first = self.materials.len() as u32;
+        let mut interiors = HashMap::new();
+        let mut textures: HashMap<usize, Arc<Texture>> = HashMap::new();
+        for material in &prototype.materials {
+            let mut m = material.clone();
+            let key = Arc::as_ptr(&m.texture) as usize;
+            m.texture = textures
+                .entry(key)
+                .or_insert_with(|| moved(&material.texture, &object.transform))
+                .clone();
+            m.interior_id = if Some(m.interior_id) == prototype.opaque_interior {
+                self.interior_of(OPAQUE_INTERIOR)
+            } else {
+                let fresh = OPAQUE_INTERIOR - 1 - self.materials.len();
+                *interiors
+                    .entry(m.interior_id)
+                    .or_insert_with(|| self.interior_of(fresh))
+            };
+            m.inner = m.inner.map(|i| i + first);
+            self.materials.push(m);
+        }
+        let world = prototype.world.clone();
+        Some(self.world.instance(world, *object.transform, first))
+    }
+
+    /// The prototype of a shared object, built on its first placement. `None` where it
+    /// cannot be shared: its interiors hold media (their densities are read in world
+    /// space per interior), or it has blobs with textured components (whose blend reads
+    /// the prototype's own tables).
+    fn prototype(&mut self, shared: &Arc<Object>) -> Option<Rc<Prototype>> {
+        let key = Arc::as_ptr(shared) as usize;
+        if let Some(built) = self.prototypes.get(&key) {
+            return built.clone();
+        }
+        let mut b = Builder::new(MediaTable::new(&[]), false, self.default_texture.clone());
+        b.in_prototype = true;
+        let texture = self.default_texture.clone();
+        let interior = Interior::default();
+        let looks = Looks {
+            texture: &texture,
+            interior_texture: None,
+            interior: &interior,
+            interior_owner: None,
+            flags: ObjectFlags::default(),
+        };
+        b.object(shared, looks, true);
+        let world = b.world.build();
+        let built = (b.media.is_empty() && !world.has_textured_blobs()).then(|| {
+            Rc::new(Prototype {
+                world: Arc::new(world),
+                materials: b.materials,
+                opaque_interior: b.interior_ids.get(&OPAQUE_INTERIOR).copied(),
+            })
+        });
+        self.prototypes.insert(key, built.clone());
+        built
+    }
+
+    /// The interior id of an owner key, made on first use.
+    fn interior_of(&mut self, owner: usize) -> u32 {
+        let next = self.interior_ids.len() as u32;
+        let id = *self.interior_ids.entry(owner).or_insert(next);
+        self.media.add_interior(id, &[]);
+        id
     }
 
     /// A CSG node of `shape`'s kind over its children, which do not inherit `inverse`.
@@ -534,7 +668,6 @@ impl Builder {
     /// the default interior it is opaque and takes the interior all opaque ones share.
     fn new_material(&mut self, looks: Looks<'_>, shared: bool) -> u32 {
         let interior = looks.interior;
-        let next = self.interior_ids.len() as u32;
         let owner = match looks.interior_owner {
             Some(owner) => owner,
             // Opaque and with nothing inside: no ray enters, so all share one interior.
@@ -542,7 +675,7 @@ impl Builder {
             // A default interior of its own: a key no address can take.
             None => OPAQUE_INTERIOR - 1 - self.materials.len(),
         };
-        let interior_id = *self.interior_ids.entry(owner).or_insert(next);
+        let interior_id = self.interior_of(owner);
         self.media.add_interior(interior_id, &interior.media);
         let photons = looks.flags.photons.unwrap_or_default();
         // POV-Ray's shadow rays stop at a target that refracts photons: the photons bring
@@ -682,7 +815,8 @@ impl Builder {
             | Shape::Union(_)
             | Shape::Merge(_)
             | Shape::Intersection(_)
-            | Shape::Difference(_) => return None,
+            | Shape::Difference(_)
+            | Shape::Instance(_) => return None,
         })
     }
 

@@ -77,6 +77,11 @@ pub enum Shape {
     Intersection(Vec<Object>),
     /// The first child minus all the others.
     Difference(Vec<Object>),
+    /// A declared object of many parts, shared by every `object { Name ... }` that only
+    /// moves it: the object holding this shape places it by its own transform (after the
+    /// shared object's), and has no texture, interior, flags or clipping of its own (a
+    /// modifier other than a transform makes a copy first, see [`Object::unshared`]).
+    Instance(Arc<Object>),
 }
 
 /// The shapes' parameters too large to sit in [`Shape`] itself: boxed, so a sphere (the
@@ -380,7 +385,46 @@ pub struct Clipping {
     pub bounded_by: Vec<Object>,
 }
 
+/// A declared CSG object with at least this many objects in it is shared by the objects
+/// that place it rather than copied into each (see [`Shape::Instance`]): below it, an
+/// instance's own materials and transform cost more than the copy.
+pub const SHARED_PARTS: usize = 32;
+
 impl Object {
+    /// The object as a declaration keeps it: behind a shared pointer when it is a CSG
+    /// object of [`SHARED_PARTS`] objects or more and holds no instance itself (the
+    /// render-ready scene places prototypes, not instances of instances).
+    pub fn shared_if_large(self) -> Object {
+        let parts = self.parts();
+        if self.shape.children().is_none() || parts.is_none_or(|n| n < SHARED_PARTS) {
+            return self;
+        }
+        Object::new(Shape::Instance(Arc::new(self)))
+    }
+
+    /// The objects in this one's CSG tree, itself included; `None` if it holds an
+    /// instance.
+    fn parts(&self) -> Option<usize> {
+        match &self.shape {
+            Shape::Instance(_) => None,
+            shape => shape
+                .children()
+                .unwrap_or(&[])
+                .iter()
+                .try_fold(1, |n, c| Some(n + c.parts()?)),
+        }
+    }
+
+    /// The object with an instance replaced by its own copy of the shared object, moved
+    /// into place, so it can take modifiers of its own; other objects as they are.
+    pub fn unshared(&mut self) {
+        if let Shape::Instance(shared) = &self.shape {
+            let mut copy = (**shared).clone();
+            copy.transform_by(&self.transform);
+            *self = copy;
+        }
+    }
+
     pub fn new(shape: Shape) -> Object {
         Object {
             shape,

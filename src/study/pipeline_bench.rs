@@ -56,29 +56,36 @@ fn measure(cmd: &mut Command) -> Result<Cost, String> {
     })
 }
 
-fn povray(scene: &Path, dir: &Path, width: u32, height: u32) -> Result<Cost, String> {
+/// Identifiers a run defines before the scene is read (`Declare=` / `--declare`).
+type Declares<'a> = &'a [(&'a str, usize)];
+
+fn povray(scene: &Path, dir: &Path, size: (u32, u32), declares: Declares) -> Result<Cost, String> {
     measure(
         Command::new("povray")
             .arg(format!("+I{}", scene.display()))
             .arg(format!("+O{}", dir.join("pov.png").display()))
-            .args([format!("+W{width}"), format!("+H{height}")])
+            .args([format!("+W{}", size.0), format!("+H{}", size.1)])
+            .args(declares.iter().map(|(k, v)| format!("Declare={k}={v}")))
             .args(["-A", "-D", "-V", "-GA"]),
     )
 }
 
-fn penumbra(exe: &Path, scene: &Path, dir: &Path, width: u32, height: u32) -> Result<Cost, String> {
+fn penumbra(
+    exe: &Path,
+    scene: &Path,
+    dir: &Path,
+    size: (u32, u32),
+    declares: Declares,
+) -> Result<Cost, String> {
     measure(
         Command::new(exe)
             .arg("render")
             .arg(scene)
             .arg("-o")
             .arg(dir.join("penumbra.png"))
-            .args([
-                "--width",
-                &width.to_string(),
-                "--height",
-                &height.to_string(),
-            ])
+            .args(["--width", &size.0.to_string()])
+            .args(["--height", &size.1.to_string()])
+            .args(declares.iter().map(|(k, v)| format!("--declare={k}={v}")))
             .args(["--spp", "1", "-q"]),
     )
 }
@@ -92,11 +99,21 @@ fn row(n: usize, exe: &Path, dir: &Path, size: (u32, u32)) -> Result<String, Str
     let side = (n as f64).sqrt().round().max(1.0) as usize;
     let scene = dir.join(format!("grid_{side}.pov"));
     std::fs::write(&scene, grid_scene(side)).map_err(|e| e.to_string())?;
-    let ours = penumbra(exe, &scene, dir, size.0, size.1)?;
-    let pov = povray(&scene, dir, size.0, size.1);
+    let ours = penumbra(exe, &scene, dir, size, &[])?;
+    let pov = povray(&scene, dir, size, &[]);
     let spheres = side * side;
     let per_object = ours.peak_bytes as f64 / spheres as f64;
-    let theirs = match pov {
+    Ok(format!(
+        "{spheres:>9} {:>9.2} {:>9.0} {per_object:>10.0} {}",
+        ours.seconds,
+        megabytes(ours.peak_bytes),
+        beside(&ours, pov)
+    ))
+}
+
+/// POV-Ray's columns: its time and memory, and both over penumbra's.
+fn beside(ours: &Cost, pov: Result<Cost, String>) -> String {
+    match pov {
         Ok(p) => format!(
             "{:>9.2} {:>9.0} {:>8.2}x {:>8.2}x",
             p.seconds,
@@ -105,12 +122,60 @@ fn row(n: usize, exe: &Path, dir: &Path, size: (u32, u32)) -> Result<String, Str
             p.peak_bytes as f64 / ours.peak_bytes as f64
         ),
         Err(e) => format!("{e:>38}"),
+    }
+}
+
+/// scenes/forest.pov: one declared tree of `parts` objects placed `trees` x `trees` times,
+/// which penumbra shares and POV-Ray copies.
+const FOREST: &str = include_str!("../../scenes/forest.pov");
+
+/// `penumbra bench --forest`: the forest at each size, both renderers, time and peak memory.
+pub fn forest(
+    sizes: &[(usize, usize)],
+    exe: &Path,
+    size: (u32, u32),
+    mut line: impl FnMut(String),
+) {
+    line(format!(
+        "forest: scenes/forest.pov, Trees x Trees placements of a tree of Parts objects, {}x{}, \
+         whole process each; penumbra 1 spp on all cores, POV-Ray -A",
+        size.0, size.1
+    ));
+    let dir = match TempDir::new("bench-forest") {
+        Ok(d) => d,
+        Err(e) => return line(format!("forest skipped: no temp dir ({e})")),
     };
-    Ok(format!(
-        "{spheres:>9} {:>9.2} {:>9.0} {per_object:>10.0} {theirs}",
-        ours.seconds,
-        megabytes(ours.peak_bytes)
-    ))
+    let scene = dir.path().join("forest.pov");
+    if let Err(e) = std::fs::write(&scene, FOREST) {
+        return line(format!("forest skipped: {e}"));
+    }
+    line(format!(
+        "{:>7} {:>6} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "trees",
+        "parts",
+        "objects",
+        "ours (s)",
+        "ours (MB)",
+        "POV (s)",
+        "POV (MB)",
+        "time",
+        "memory"
+    ));
+    for &(trees, parts) in sizes {
+        let declares = [("Trees", trees), ("Parts", parts)];
+        let objects = trees * trees * parts;
+        match penumbra(exe, &scene, dir.path(), size, &declares) {
+            Ok(ours) => line(format!(
+                "{:>7} {parts:>6} {objects:>11} {:>9.2} {:>9.0} {}",
+                trees * trees,
+                ours.seconds,
+                megabytes(ours.peak_bytes),
+                beside(&ours, povray(&scene, dir.path(), size, &declares))
+            )),
+            Err(e) => line(format!("{trees}x{trees} trees of {parts}: skipped: {e}")),
+        }
+    }
+    line("time and memory columns: POV-Ray's over penumbra's (above 1: penumbra ahead)".into());
 }
 
 /// The section's lines.

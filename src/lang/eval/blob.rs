@@ -5,7 +5,7 @@ use std::sync::Arc;
 use super::super::diagnostics::Diagnostic;
 use super::super::syntax::{Punct, Token};
 use super::Evaluator;
-use super::value::{ObjectValue, Value};
+use super::value::ObjectValue;
 use crate::scene::{Blob, BlobComponent, BlobComponentKind, Object, Shape, Transform};
 
 type R<T> = Result<T, Diagnostic>;
@@ -18,16 +18,12 @@ fn shape(s: Shape) -> ObjectValue {
 }
 
 impl Evaluator<'_> {
-    /// `superellipsoid { <e, n> }`: POV-Ray's east-west and north-south exponents.
+    /// `superellipsoid { <e, n> }`: POV-Ray's east-west and north-south exponents; a
+    /// float e reads as <e, e> (measured: the same image).
     pub(super) fn superellipsoid(&mut self) -> R<ObjectValue> {
         let (v, s) = self.expr()?;
-        let (east_west, north_south) = match v {
-            Value::Float(_) => return Err(self.err(s, "expected a vector <e, n>, found a float")),
-            _ => {
-                let v = self.to_vec3(&v, s)?;
-                (v.x, v.y)
-            }
-        };
+        let v = self.to_vec3(&v, s)?;
+        let (east_west, north_south) = (v.x, v.y);
         if !(east_west > 0.0 && north_south > 0.0) {
             return Err(self.err(
                 s,

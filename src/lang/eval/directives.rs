@@ -779,15 +779,23 @@ impl Evaluator<'_> {
                     }
                     _ => None,
                 };
-                let value = self.declared_value()?;
+                // A function passed by name is passed itself: an expression would call it.
+                let value = match by_name.as_deref().and_then(|n| self.lookup(n)) {
+                    Some(f @ Value::Function(_)) => {
+                        let f = f.clone();
+                        self.next()?;
+                        f
+                    }
+                    _ => self.declared_value()?,
+                };
                 if let Some(caller) = by_name {
                     by_ref.push((param.clone(), caller));
                 }
                 locals.insert(param, value);
                 i += 1;
-                if !self.eat(Punct::Comma)? {
-                    break;
-                }
+                // POV-Ray's commas between arguments are optional (incdemo/shapes.pov
+                // passes an object and then `-y` without one).
+                self.eat(Punct::Comma)?;
             }
             Ok(())
         })();

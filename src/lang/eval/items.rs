@@ -68,11 +68,11 @@ impl Evaluator<'_> {
                 self.unsupported_or_skip(&tok, &word)?;
             }
             _ => {
+                if let Some(o) = self.named_object()? {
+                    return self.add_object(o, tok.span);
+                }
                 if let Some(v) = self.lookup(word) {
-                    let hint = match v {
-                        Value::Object(_) => format!("to place it, write `object {{ {word} }}`"),
-                        _ => format!("`{word}` is {}", v.kind_name()),
-                    };
+                    let hint = format!("`{word}` is {}", v.kind_name());
                     return Err(self
                         .err(
                             tok.span,
@@ -125,7 +125,12 @@ impl Evaluator<'_> {
             return Ok(self.expr()?.0);
         }
         Ok(match word {
-            _ if super::objects::is_object_keyword(word) => Value::Object(Box::new(self.object()?)),
+            _ if super::objects::is_object_keyword(word) => {
+                let mut value = self.object()?;
+                // Placed many times, a large object is shared rather than copied.
+                value.object = value.object.map(crate::scene::Object::shared_if_large);
+                Value::Object(Box::new(value))
+            }
             "light_source" => Value::Object(Box::new(ObjectValue {
                 object: None,
                 lights: vec![self.light_source()?],
@@ -551,7 +556,10 @@ impl Evaluator<'_> {
             }
             "looks_like" => {
                 let open = self.block_start("looks_like")?;
-                let value = self.object()?;
+                let value = match self.named_object()? {
+                    Some(o) => o,
+                    None => self.object()?,
+                };
                 self.block_end(open, "looks_like")?;
                 if let Some(mut object) = value.object {
                     // The object is modelled at the origin and travels with the light;

@@ -287,6 +287,19 @@ impl Evaluator<'_> {
         }))
     }
 
+    /// A bare object identifier, read as `object { Name }` would be: POV-Ray places one at
+    /// the top level and takes one in `looks_like` (measured: the same image). `None` when
+    /// the next token is not one.
+    pub(super) fn named_object(&mut self) -> R<Option<ObjectValue>> {
+        let tok = self.peek()?;
+        let Some(Value::Object(o)) = tok.ident().and_then(|n| self.lookup(n)).cloned() else {
+            return Ok(None);
+        };
+        self.next()?;
+        self.count_objects(1, super::budget::OBJECT_BYTES, tok.span)?;
+        Ok(Some(*o))
+    }
+
     /// `object { Name ... }`, `object { Shapes[i] ... }` or `object { sphere {...} ... }`.
     fn object_reference(&mut self) -> R<ShapeRead> {
         if self.skip_unsupported
@@ -410,6 +423,8 @@ impl Evaluator<'_> {
             let Some(object) = o.object.as_mut() else {
                 return Err(self.stray_in_block(&tok, what));
             };
+            // Modifiers other than transforms make a shared object this one's own.
+            object.unshared();
             let known = match word.as_str() {
                 "texture" => {
                     self.texture_layer(object, &mut textures)?;

@@ -318,11 +318,25 @@ impl Evaluator<'_> {
             if frame.pos < frame.end {
                 // Neither a directive nor a name (a macro call, say) can continue an
                 // expression, so neither is run here; any other token is what `peek`
-                // would return.
-                if let Some(tok) = frame.tokens.get(frame.pos) {
-                    return Ok(*tok);
+                // would return. The exception is what follows the branch of an `#if`
+                // just taken (its `#else`, `#elseif` or `#end`), which only skips: POV-Ray
+                // reads through it, so a macro whose value comes from inside an `#if`
+                // (arrays.inc's Rand_Array_Item) continues the caller's expression.
+                let Some(&tok) = frame.tokens.get(frame.pos) else {
+                    break;
+                };
+                let if_open = self.conds.len() > frame.cond_base
+                    && matches!(self.conds.last(), Some(Cond::If { .. }));
+                match tok.kind {
+                    TokenKind::Directive(name)
+                        if if_open && matches!(name, "else" | "elseif" | "end") =>
+                    {
+                        self.advance();
+                        self.directive(name, tok.span)?;
+                        continue;
+                    }
+                    _ => return Ok(tok),
                 }
-                break;
             }
             if self.frames.len() == 1 || self.conds.len() > frame.cond_base {
                 break;
