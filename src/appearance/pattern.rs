@@ -97,6 +97,7 @@ pub fn list_index(kind: &PatternKind, p: DVec3) -> usize {
         PatternKind::Hexagon => hexagon(p),
         PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
         PatternKind::MaterialMap(m) => super::pigment::material_index(m, p),
+        PatternKind::Object(o) => usize::from(o.holds(p)),
         _ => 0,
     }
 }
@@ -200,6 +201,7 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
         PatternKind::Gradient(g) => gradient_value(p.dot(*g)),
         PatternKind::Slope(slope) => slope_value(slope, p, DVec3::ZERO),
         PatternKind::MaterialMap(m) => super::pigment::material_index(m, p) as f64,
+        PatternKind::Object(o) => f64::from(u8::from(o.holds(p))),
         PatternKind::BumpMap(_) => 0.0,
         // Measured: values above 1 wrap as gradient's do (1.25 and 10.25 read 0.25, 1 stays
         // 1), and -0.25 reads 0.75.

@@ -801,7 +801,7 @@ impl World {
     }
 
     /// Whether any top-level item's solid holds `p`.
-    fn holds(&self, p: DVec3) -> bool {
+    pub fn holds(&self, p: DVec3) -> bool {
         self.unbounded.iter().any(|&i| self.inside(i, p))
             || self.bvh.any_containing(p, |i| self.inside(i, p))
     }

@@ -36,7 +36,8 @@ pub use spline::{
 pub use texture::{
     BlackHole, BumpMap, Crackle, Finish, Fractal, FractalColouring, FractalFormula, HeightImage,
     ImageData, ImageMap, IndexImage, Interior, Irid, MapType, MappingKind, MappingWarp,
-    MaterialImage, Normal, Orientation, Pattern, PatternKind, Pigment, PigmentKind, Quilted,
+    MaterialImage, Normal, ObjectPattern, Orientation, Pattern, PatternKind, Pigment, PigmentKind,
+    Quilted,
     Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp,
     Wave,
 };

@@ -236,6 +236,33 @@ pub enum PatternKind {
         image: std::sync::Arc<ImageMap>,
         use_alpha: bool,
     },
+    /// `object { Obj A, B }`: entry 1 inside the object's solid, 0 outside (a list
+    /// pattern of two).
+    Object(ObjectPattern),
+}
+
+/// The object an `object` pattern tests points against, built for that test (its BVH and
+/// CSG) when the pattern is read.
+#[derive(Clone)]
+pub struct ObjectPattern(pub std::sync::Arc<crate::geometry::World>);
+
+impl ObjectPattern {
+    pub fn holds(&self, p: DVec3) -> bool {
+        self.0.holds(p)
+    }
+}
+
+/// Patterns compare equal when they test the same built object.
+impl PartialEq for ObjectPattern {
+    fn eq(&self, other: &ObjectPattern) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl std::fmt::Debug for ObjectPattern {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "ObjectPattern({} primitives)", self.0.primitive_count())
+    }
 }
 
 impl PatternKind {
@@ -250,7 +277,7 @@ impl PatternKind {
     /// Patterns that select one of a fixed number of entries.
     pub fn list_size(&self) -> Option<usize> {
         match self {
-            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Checker | PatternKind::Brick { .. } | PatternKind::Object(_) => Some(2),
             PatternKind::Hexagon => Some(3),
             PatternKind::MaterialMap(m) => Some(m.count),
             _ => None,

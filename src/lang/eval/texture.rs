@@ -26,11 +26,11 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "square",
     "tiling",
     "triangular",
-    "object",
 ];
 
 /// Pattern keywords penumbra models.
 const PATTERNS: &[&str] = &[
+    "object",
     "image_pattern",
     "density_file",
     "slope",
@@ -348,6 +348,7 @@ impl Evaluator<'_> {
         let pattern = self.new_pattern(kind);
         let kind = if let Some(n) = pattern.kind.list_size() {
             let entries = self.list_entries(n)?;
+            self.object_pattern_end(&pattern.kind)?;
             PigmentKind::List { pattern, entries }
         } else {
             let map = default_colour_map(&pattern.kind);
@@ -506,6 +507,7 @@ impl Evaluator<'_> {
                 let span = self.peek()?.span;
                 PatternKind::Function(self.point_function(span)?)
             }
+            "object" => PatternKind::Object(self.object_pattern()?),
             _ => {
                 // pigment_pattern
                 let pig = self.pigment_body_from_keyword()?;
@@ -1064,6 +1066,7 @@ impl Evaluator<'_> {
                     }
                     if let Some(count) = normal.pattern.kind.list_size() {
                         normal.normal_map = self.normal_list_entries(count)?;
+                        self.object_pattern_end(&normal.pattern.kind)?;
                     }
                     n = Some(normal);
                 }
@@ -1499,12 +1502,18 @@ impl Evaluator<'_> {
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
+                    let object = matches!(kind, PatternKind::Object(_));
                     t.map = Some(Box::new(TextureMap {
                         pattern: self.new_pattern(kind),
                         transform: Transform::IDENTITY,
                         entries: Vec::new(),
                         uv_mapping: false,
                     }));
+                    // Its entries are inside its braces.
+                    if object {
+                        self.texture_list_entries(&mut t, &tok)?;
+                        self.expect(Punct::RBrace, "to close the object pattern")?;
+                    }
                 }
                 "tiles" => {
                     self.next()?;
@@ -1556,6 +1565,37 @@ impl Evaluator<'_> {
 }
 
 impl Evaluator<'_> {
+    /// `object { Obj` (or an object block) of an object pattern, whose entries and closing
+    /// brace follow ([`Evaluator::object_pattern_end`]); the object is built for inside
+    /// tests here, once.
+    fn object_pattern(&mut self) -> R<crate::scene::ObjectPattern> {
+        self.expect(Punct::LBrace, "after `object`")?;
+        let value = match self.named_object()? {
+            Some(o) => o,
+            None if super::objects::is_object_keyword(self.peek()?.ident().unwrap_or("")) => {
+                self.object()?
+            }
+            None => {
+                let tok = self.peek()?;
+                return Err(self.expected("an object for the object pattern", &tok));
+            }
+        };
+        let scene = crate::scene::Scene {
+            objects: value.object.into_iter().collect(),
+            ..crate::scene::Scene::default()
+        };
+        let world = crate::render::prepared::PreparedScene::new(&scene).world;
+        Ok(crate::scene::ObjectPattern(std::sync::Arc::new(world)))
+    }
+
+    /// The closing brace of an object pattern, after its entries.
+    fn object_pattern_end(&mut self, kind: &PatternKind) -> R<()> {
+        if matches!(kind, PatternKind::Object(_)) {
+            self.expect(Punct::RBrace, "to close the object pattern")?;
+        }
+        Ok(())
+    }
+
     /// `texture { checker texture {A} texture {B} }`: the entries of a list pattern, one
     /// texture per index (the pattern's value), as a texture map with entries at 0, 1, ...
     fn texture_list_entries(
