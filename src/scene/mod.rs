@@ -37,9 +37,8 @@ pub use texture::{
     BlackHole, BumpMap, Crackle, Finish, Fractal, FractalColouring, FractalFormula, HeightImage,
     ImageData, ImageMap, IndexImage, Interior, Irid, MapType, MappingKind, MappingWarp,
     MaterialImage, Normal, ObjectPattern, Orientation, Pattern, PatternKind, Pigment, PigmentKind,
-    Quilted,
-    Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid, Warp,
-    Wave,
+    Quilted, Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid,
+    Warp, Wave,
 };
 
 use glam::DVec3;

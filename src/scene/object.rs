@@ -385,21 +385,33 @@ pub struct Clipping {
     pub bounded_by: Vec<Object>,
 }
 
-/// A declared CSG object with at least this many objects in it is shared by the objects
-/// that place it rather than copied into each (see [`Shape::Instance`]): below it, an
-/// instance's own materials and transform cost more than the copy.
+/// A declared CSG object with at least this many objects in it, or a mesh with this many
+/// triangles, is shared by the objects that place it rather than copied into each (see
+/// [`Shape::Instance`]): below it, an instance's own materials and transform cost more
+/// than the copy.
 pub const SHARED_PARTS: usize = 32;
 
 impl Object {
-    /// The object as a declaration keeps it: behind a shared pointer when it is a CSG
-    /// object of [`SHARED_PARTS`] objects or more and holds no instance itself (the
+    /// The object as a declaration keeps it: behind a shared pointer when it is a mesh or
+    /// a CSG object of [`SHARED_PARTS`] parts or more and holds no instance itself (the
     /// render-ready scene places prototypes, not instances of instances).
     pub fn shared_if_large(self) -> Object {
-        let parts = self.parts();
-        if self.shape.children().is_none() || parts.is_none_or(|n| n < SHARED_PARTS) {
+        let large = match &self.shape {
+            Shape::Mesh(m) => m.faces.len() >= SHARED_PARTS,
+            shape => shape.children().is_some() && self.parts().is_some_and(|n| n >= SHARED_PARTS),
+        };
+        if !large {
             return self;
         }
         Object::new(Shape::Instance(Arc::new(self)))
+    }
+
+    /// The shape an instance shares, or the object's own.
+    pub fn own_shape(&self) -> &Shape {
+        match &self.shape {
+            Shape::Instance(shared) => &shared.shape,
+            shape => shape,
+        }
     }
 
     /// The objects in this one's CSG tree, itself included; `None` if it holds an

@@ -117,6 +117,11 @@ impl Evaluator<'_> {
 
 /// A mesh object's faces in world space; `None` for other shapes and empty meshes.
 fn camera_mesh(o: &Object) -> Option<CameraMesh> {
+    if let Shape::Instance(_) = o.shape {
+        let mut own = o.clone();
+        own.unshared();
+        return camera_mesh(&own);
+    }
     let Shape::Mesh(m) = &o.shape else {
         return None;
     };

@@ -38,7 +38,7 @@ impl Evaluator<'_> {
             first.ident().and_then(|w| self.lookup(w)).cloned()
             && o.object
                 .as_ref()
-                .is_some_and(|x| matches!(x.shape, Shape::Mesh(_)))
+                .is_some_and(|x| matches!(x.own_shape(), Shape::Mesh(_)))
         {
             self.next()?;
             return Ok(*o);
