@@ -1500,20 +1500,7 @@ impl Evaluator<'_> {
                     map.entries = entries;
                 }
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
-                    self.next()?;
-                    let kind = self.pattern_kind(w)?;
-                    let object = matches!(kind, PatternKind::Object(_));
-                    t.map = Some(Box::new(TextureMap {
-                        pattern: self.new_pattern(kind),
-                        transform: Transform::IDENTITY,
-                        entries: Vec::new(),
-                        uv_mapping: false,
-                    }));
-                    // Its entries are inside its braces.
-                    if object {
-                        self.texture_list_entries(&mut t, &tok)?;
-                        self.expect(Punct::RBrace, "to close the object pattern")?;
-                    }
+                    self.texture_pattern(&mut t, &tok, w)?;
                 }
                 "tiles" => {
                     self.next()?;
@@ -1565,6 +1552,30 @@ impl Evaluator<'_> {
 }
 
 impl Evaluator<'_> {
+    /// A pattern keyword `w` in a texture: the pattern of a texture map to come (or of a
+    /// list of textures); the object pattern's entries come inside its braces.
+    fn texture_pattern(
+        &mut self,
+        t: &mut Texture,
+        tok: &super::super::syntax::Token,
+        w: &str,
+    ) -> R<()> {
+        self.next()?;
+        let kind = self.pattern_kind(w)?;
+        let object = matches!(kind, PatternKind::Object(_));
+        t.map = Some(Box::new(TextureMap {
+            pattern: self.new_pattern(kind),
+            transform: Transform::IDENTITY,
+            entries: Vec::new(),
+            uv_mapping: false,
+        }));
+        if object {
+            self.texture_list_entries(t, tok)?;
+            self.expect(Punct::RBrace, "to close the object pattern")?;
+        }
+        Ok(())
+    }
+
     /// `object { Obj` (or an object block) of an object pattern, whose entries and closing
     /// brace follow ([`Evaluator::object_pattern_end`]); the object is built for inside
     /// tests here, once.
