@@ -1787,19 +1787,7 @@ impl Evaluator<'_> {
         let Value::Str(name) = v else {
             return Err(self.err(span, "expected the image file name as a string"));
         };
-        // A name without an extension is looked for with the image types' own, as
-        // POV-Ray does (advanced/cliche.pov's "sign" is sign.jpg).
-        let bare = std::path::Path::new(&*name).extension().is_none();
-        let candidates = std::iter::once(name.to_string()).chain(
-            [".png", ".jpg", ".jpeg"]
-                .into_iter()
-                .filter(|_| bare)
-                .map(|e| format!("{name}{e}")),
-        );
-        let Some(path) = candidates
-            .into_iter()
-            .find_map(|n| self.resolve_include(&n))
-        else {
+        let Some(path) = self.resolve_include(&name) else {
             return Err(self.err(span, format!("cannot find the image \"{name}\"")));
         };
         let working = if data || self.scene.legacy() {
