@@ -80,36 +80,53 @@ pub struct TracePoint {
     pub location: Option<Location>,
 }
 
-/// An error or warning with its position, hints and the include/macro chain.
+/// An error or warning with its position, hints and the include/macro chain. Boxed, so
+/// that the evaluator's `Result<_, Diagnostic>`, returned by every token read and every
+/// expression, is no larger than its value: errors are rare, results are not.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Diagnostic {
+pub struct Diagnostic(Box<DiagnosticData>);
+
+/// What a [`Diagnostic`] holds (read and written through it).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DiagnosticData {
     pub severity: Severity,
     pub message: String,
     pub span: Span,
     pub hints: Vec<String>,
     pub trace: Vec<TracePoint>,
-    /// Filled in by [`Files::resolve`] before the diagnostic is handed out. Boxed to keep
-    /// `Result<_, Diagnostic>` small on the evaluator's hot paths.
+    /// Filled in by [`Files::resolve`] before the diagnostic is handed out.
     pub location: Option<Box<Location>>,
+}
+
+impl std::ops::Deref for Diagnostic {
+    type Target = DiagnosticData;
+    fn deref(&self) -> &DiagnosticData {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for Diagnostic {
+    fn deref_mut(&mut self) -> &mut DiagnosticData {
+        &mut self.0
+    }
 }
 
 impl Diagnostic {
     pub fn error(span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
+        Diagnostic(Box::new(DiagnosticData {
             severity: Severity::Error,
             message: message.into(),
             span,
             hints: Vec::new(),
             trace: Vec::new(),
             location: None,
-        }
+        }))
     }
 
     pub fn warning(span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
-            severity: Severity::Warning,
-            ..Diagnostic::error(span, message)
-        }
+        let mut d = Diagnostic::error(span, message);
+        d.severity = Severity::Warning;
+        d
     }
 
     pub fn with_hint(mut self, hint: impl Into<String>) -> Diagnostic {

@@ -205,7 +205,7 @@ impl Evaluator<'_> {
                 return Err(self.expected("an identifier to read into", &var));
             };
             if let Some(v) = self.next_data_value(&handle, id.span)? {
-                self.assign(name, v, false);
+                self.assign(&name, v, false);
             }
             self.eat(Punct::Comma)?;
         }

@@ -306,7 +306,7 @@ impl Evaluator<'_> {
                 };
                 let next = current + step;
                 if (step > 0.0 && next <= end + 1e-10) || (step < 0.0 && next >= end - 1e-10) {
-                    self.assign(var.clone(), Value::Float(next), false);
+                    self.assign(&var, Value::Float(next), false);
                     self.conds.push(Cond::For {
                         span: for_span,
                         var,
@@ -347,7 +347,7 @@ impl Evaluator<'_> {
             start >= end - 1e-10
         };
         if runs {
-            self.assign(var.clone(), Value::Float(start), false);
+            self.assign(&var, Value::Float(start), false);
             self.conds.push(Cond::For {
                 span,
                 var,
@@ -498,10 +498,10 @@ impl Evaluator<'_> {
                 id = self.raw_next();
             }
         }
-        let Some(name) = id.ident().map(Rc::<str>::from) else {
+        let Some(name) = id.ident() else {
             return Err(self.expected("an identifier to declare", &id));
         };
-        if super::keywords::is_keyword(&name) {
+        if super::keywords::is_keyword(name) {
             return Err(self.err(
                 id.span,
                 format!("`{name}` is a POV-Ray keyword and cannot be declared"),
@@ -509,7 +509,7 @@ impl Evaluator<'_> {
         }
         // `#declare A[i][j] = value`: assignment into an existing array.
         if self.peek()?.is_punct(Punct::LBracket) {
-            return self.declare_element(&name, &id, span);
+            return self.declare_element(name, &id, span);
         }
         self.expect_lazy(Punct::Eq, || format!("after `{name}`"))?;
         // A `#local` belongs to the scope it is written in, not to a macro the value calls:

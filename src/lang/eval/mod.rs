@@ -213,7 +213,7 @@ impl<'w> Evaluator<'w> {
     fn expect(&mut self, p: Punct, context: &str) -> Result<Token, Diagnostic> {
         let tok = self.peek()?;
         if tok.is_punct(p) {
-            self.next()?;
+            self.advance();
             Ok(tok)
         } else {
             let what = if context.is_empty() {
@@ -233,7 +233,7 @@ impl<'w> Evaluator<'w> {
     ) -> Result<Token, Diagnostic> {
         let tok = self.peek()?;
         if tok.is_punct(p) {
-            self.next()?;
+            self.advance();
             Ok(tok)
         } else {
             self.expect(p, &context())
@@ -242,7 +242,7 @@ impl<'w> Evaluator<'w> {
 
     fn eat(&mut self, p: Punct) -> Result<bool, Diagnostic> {
         if self.peek()?.is_punct(p) {
-            self.next()?;
+            self.advance();
             Ok(true)
         } else {
             Ok(false)
@@ -251,7 +251,7 @@ impl<'w> Evaluator<'w> {
 
     fn eat_ident(&mut self, name: &str) -> Result<bool, Diagnostic> {
         if self.peek()?.is_ident(name) {
-            self.next()?;
+            self.advance();
             Ok(true)
         } else {
             Ok(false)

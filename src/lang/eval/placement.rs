@@ -99,7 +99,7 @@ impl Evaluator<'_> {
     /// Where `trace`'s optional fourth argument, a variable's name, gets the normal.
     fn set_normal(&mut self, call: &Call<'_>, normal: DVec3) {
         if let Some((Value::Str(name), _)) = call.args.get(3) {
-            self.assign(name.clone(), vector(normal), false);
+            self.assign(name, vector(normal), false);
         }
     }
 }

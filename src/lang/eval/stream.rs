@@ -352,7 +352,7 @@ impl Evaluator<'_> {
         p: crate::lang::syntax::Punct,
     ) -> Result<bool, Diagnostic> {
         if self.peek_operator()?.is_punct(p) {
-            self.next()?;
+            self.advance();
             Ok(true)
         } else {
             Ok(false)
@@ -413,7 +413,7 @@ impl Evaluator<'_> {
                 let locals = self.scopes.pop().unwrap_or_default();
                 for (param, caller) in by_ref {
                     if let Some(v) = locals.get(&param) {
-                        self.assign(caller, v.clone(), false);
+                        self.assign(&caller, v.clone(), false);
                     }
                 }
             }
@@ -422,27 +422,33 @@ impl Evaluator<'_> {
 
     /// `#declare` assigns to the innermost scope that already has the name, else the
     /// global one; `#local` always assigns to the innermost scope.
-    pub(super) fn assign(&mut self, name: Rc<str>, value: Value, local: bool) {
+    pub(super) fn assign(&mut self, name: &str, value: Value, local: bool) {
         let last = self.scopes.len() - 1;
         let index = if local {
             last
         } else {
             (1..self.scopes.len())
                 .rev()
-                .find(|&i| self.scopes[i].contains_key(&name))
+                .find(|&i| self.scopes[i].contains_key(name))
                 .unwrap_or(0)
         };
         self.assign_at(name, value, index);
     }
 
     /// Into scope `index` (for `#local`, the one the directive was written in), or the
-    /// innermost if that has closed meanwhile.
-    pub(super) fn assign_at(&mut self, name: Rc<str>, value: Value, index: usize) {
+    /// innermost if that has closed meanwhile. A name already there keeps its key: a loop's
+    /// `#declare I = I + 1` allocates nothing.
+    pub(super) fn assign_at(&mut self, name: &str, value: Value, index: usize) {
         if value.needs_check_in_stream() {
             self.special_names = true;
         }
         let index = index.min(self.scopes.len() - 1);
-        self.scopes[index].insert(name, value);
+        match self.scopes[index].get_mut(name) {
+            Some(slot) => *slot = value,
+            None => {
+                self.scopes[index].insert(Rc::from(name), value);
+            }
+        }
     }
 
     /// Skips a false branch: tokens up to the `#else`/`#elseif`/`#end` (or `#case`...) that
