@@ -320,15 +320,7 @@ struct BenchArgs {
 
 /// `100x1000`: a forest of 100 x 100 trees of 1000 objects each.
 fn parse_forest(s: &str) -> Result<(usize, usize), String> {
-    let (trees, parts) = s
-        .split_once('x')
-        .ok_or_else(|| format!("`{s}`: expected TREESxPARTS, for example 100x1000"))?;
-    let number = |t: &str| {
-        t.trim()
-            .parse::<usize>()
-            .map_err(|e| format!("`{s}`: `{t}` is not a count ({e})"))
-    };
-    Ok((number(trees)?, number(parts)?))
+    parse_pair(s, "x", "a count")
 }
 
 #[derive(clap::Args)]
@@ -563,11 +555,11 @@ fn merge(args: MergeArgs) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `A..B` of two numbers (`what` names one in the error).
-fn parse_pair<T: std::str::FromStr>(s: &str, what: &str) -> Result<(T, T), String> {
+/// `A..B` (or `AxB`, as `between` says) of two numbers (`what` names one in the error).
+fn parse_pair<T: std::str::FromStr>(s: &str, between: &str, what: &str) -> Result<(T, T), String> {
     let (a, b) = s
-        .split_once("..")
-        .ok_or_else(|| format!("expected A..B, got `{s}`"))?;
+        .split_once(between)
+        .ok_or_else(|| format!("expected A{between}B, got `{s}`"))?;
     let n = |x: &str| {
         x.trim()
             .parse::<T>()
@@ -578,7 +570,7 @@ fn parse_pair<T: std::str::FromStr>(s: &str, what: &str) -> Result<(T, T), Strin
 
 /// `A..B`: a half-open range of sample indices.
 fn parse_range(s: &str) -> Result<std::ops::Range<u32>, String> {
-    let (a, b) = parse_pair::<u32>(s, "a sample index")?;
+    let (a, b) = parse_pair::<u32>(s, "..", "a sample index")?;
     if a >= b {
         return Err(format!("the range {a}..{b} is empty"));
     }
@@ -722,7 +714,7 @@ impl RenderArgs {
             ..PovSettings::default()
         };
         if let Some(frames) = &self.frames {
-            let (a, b) = parse_pair::<i64>(frames, "a frame number")
+            let (a, b) = parse_pair::<i64>(frames, "..", "a frame number")
                 .map_err(|e| format!("--frames: {e}"))?;
             settings.animation.initial_frame = a;
             settings.animation.final_frame = b;

@@ -477,13 +477,8 @@ mod tests {
     /// at coordinates from tiny to astronomic, and is no more than an f32 step looser.
     #[test]
     fn single_precision_boxes_enclose_the_double_ones() {
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut uniform = crate::geometry::uniform_stream(0x2545_F491_4F6C_DD1Du64);
+        let mut next = move || uniform() - 0.5;
         for scale in [1e-30, 1e-3, 1.0, 1e3, 1e7, 1e30, 1e40] {
             for _ in 0..1000 {
                 let a = DVec3::new(next(), next(), next()) * scale;
@@ -519,13 +514,7 @@ mod tests {
 
     /// A simple deterministic scatter of boxes of varied sizes (no random generator needed).
     fn scattered_boxes(n: usize) -> Vec<Aabb> {
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::geometry::uniform_stream(0x9E37_79B9_7F4A_7C15u64);
         (0..n)
             .map(|_| {
                 let c = DVec3::new(next(), next(), next()) * 100.0;

@@ -41,3 +41,16 @@ pub use world::{
     CsgOp, Hit, Item, MaterialBlend, PREPARED_BYTES_PER_PRIMITIVE, Primitive, SurfacePoint,
     TexturePoint, World, WorldBuilder, flags,
 };
+
+/// A deterministic stream of uniform numbers in [0, 1) for tests (xorshift64): rays and
+/// points that a seed makes the same on every machine.
+#[cfg(test)]
+pub(crate) fn uniform_stream(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
+}

@@ -1303,13 +1303,8 @@ mod tests {
         let (mut scanned, _) = build();
         assert!(indexed.csg.iter().filter(|n| n.index.is_some()).count() == 2);
         scanned.csg.iter_mut().for_each(|n| n.index = None);
-        let mut state = 0x853c_49e6_748f_ea9bu64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut uniform = crate::geometry::uniform_stream(0x853c_49e6_748f_ea9bu64);
+        let mut next = move || uniform() * 2.0 - 1.0;
         let mut hits = 0;
         for _ in 0..20_000 {
             let o = DVec3::new(next(), next(), next()) * 6.0;

@@ -122,13 +122,7 @@ impl PreparedScene {
             default_texture.clone(),
         );
         let default_interior = Interior::default();
-        let looks = Looks {
-            texture: &default_texture,
-            interior_texture: None,
-            interior: &default_interior,
-            interior_owner: None,
-            flags: ObjectFlags::default(),
-        };
+        let looks = Looks::plain(&default_texture, &default_interior);
         let looks_like = scene.lights.iter().filter_map(|l| l.looks_like.as_deref());
         for object in scene.objects.iter().chain(looks_like) {
             builder.object(object, looks, true);
@@ -346,6 +340,19 @@ struct Looks<'a> {
     flags: ObjectFlags,
 }
 
+impl<'a> Looks<'a> {
+    /// What a top-level object inherits: the default texture and interior, no flags.
+    fn plain(texture: &'a Arc<Texture>, interior: &'a Interior) -> Looks<'a> {
+        Looks {
+            texture,
+            interior_texture: None,
+            interior,
+            interior_owner: None,
+            flags: ObjectFlags::default(),
+        }
+    }
+}
+
 impl Builder {
     fn new(media: MediaTable, photons: bool, default_texture: Arc<Texture>) -> Builder {
         Builder {
@@ -479,13 +486,7 @@ impl Builder {
         b.in_prototype = true;
         let texture = self.default_texture.clone();
         let interior = Interior::default();
-        let looks = Looks {
-            texture: &texture,
-            interior_texture: None,
-            interior: &interior,
-            interior_owner: None,
-            flags: ObjectFlags::default(),
-        };
+        let looks = Looks::plain(&texture, &interior);
         b.object(shared, looks, true);
         let world = b.world.build();
         let built = (b.media.is_empty() && !world.has_textured_blobs()).then(|| {

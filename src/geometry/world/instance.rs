@@ -289,13 +289,8 @@ mod tests {
     fn instances_answer_as_their_copies_do() {
         let (a, b) = (instanced(), copied());
         assert_eq!((a.primitive_count(), a.instance_count()), (1, 5));
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut uniform = crate::geometry::uniform_stream(0x2545_f491_4f6c_dd1du64);
+        let mut next = move || uniform() * 2.0 - 1.0;
         let (mut hits, mut slab_hits) = (0, 0);
         for _ in 0..20_000 {
             let o = DVec3::new(next(), next(), next()) * 5.0;
