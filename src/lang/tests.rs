@@ -303,3 +303,30 @@ fn an_image_gamma_decodes_the_file() {
     let header = "#version 3.7; global_settings { assumed_gamma 2.2 }";
     assert_close(grey_128(header, "gamma 1.8"), v.powf(1.8 / 2.2));
 }
+
+/// `jpeg "file"` reads a JPEG as `png` reads a PNG (decoded from sRGB); a flat grey
+/// survives the compression to within a step.
+#[test]
+fn a_jpeg_image_map_reads_like_a_png() {
+    use crate::appearance::pigment::evaluate_pigment;
+    use glam::DVec3;
+    let dir = crate::study::TempDir::new("image-jpeg").unwrap();
+    image::RgbImage::from_pixel(8, 8, image::Rgb([128, 128, 128]))
+        .save(dir.path().join("grey.jpg"))
+        .unwrap();
+    let scene_path = dir.path().join("scene.pov").display().to_string();
+    let source = "#version 3.7; global_settings { assumed_gamma 1 }\n\
+                  plane { z, 0 pigment { image_map { jpeg \"grey.jpg\" } } }";
+    let loaded = load_inner(
+        &scene_path,
+        source,
+        &LoadOptions::default(),
+        &FileSystem,
+        false,
+    )
+    .unwrap();
+    let pigment = &loaded.scene.objects[0].texture.as_ref().unwrap().pigment;
+    let v = evaluate_pigment(pigment, DVec3::new(0.5, 0.5, 0.0)).rgb.x;
+    let linear = |c: f64| ((c / 255.0 + 0.055) / 1.055f64).powf(2.4);
+    assert!(v > linear(127.0) && v < linear(129.0), "{v}");
+}
