@@ -207,15 +207,7 @@ fn image_map_keeps_its_warps() {
     img.save(dir.path().join("two.png")).unwrap();
     let source = "plane { z, 0 pigment { image_map { png \"two.png\" } scale 4 \
         warp { turbulence 0 } turbulence 0.3 octaves 3 } }";
-    let scene_path = dir.path().join("scene.pov").display().to_string();
-    let loaded = load_inner(
-        &scene_path,
-        source,
-        &LoadOptions::default(),
-        &FileSystem,
-        false,
-    )
-    .unwrap();
+    let loaded = load_beside(dir.path(), source);
     let texture = loaded.scene.objects[0].texture.as_ref().expect("a texture");
     let pigment = &texture.pigment;
     let PigmentKind::Image(im) = &pigment.kind else {
@@ -237,6 +229,19 @@ fn image_map_keeps_its_warps() {
 }
 
 /// A 3.7 scene sees an image's linear colour whatever its assumed_gamma; an older
+/// A scene read as if it were a file in `dir` (whose images it names).
+fn load_beside(dir: &std::path::Path, source: &str) -> Loaded {
+    let scene_path = dir.join("scene.pov").display().to_string();
+    load_inner(
+        &scene_path,
+        source,
+        &LoadOptions::default(),
+        &FileSystem,
+        false,
+    )
+    .unwrap()
+}
+
 /// The value a 1x1 grey-128 PNG shows at its centre in a scene with `header`, its image
 /// block ending with `extra`.
 fn grey_128(header: &str, extra: &str) -> f64 {
@@ -246,18 +251,10 @@ fn grey_128(header: &str, extra: &str) -> f64 {
     image::RgbImage::from_pixel(1, 1, image::Rgb([128, 128, 128]))
         .save(dir.path().join("grey.png"))
         .unwrap();
-    let scene_path = dir.path().join("scene.pov").display().to_string();
     let source = format!(
         "{header}\nplane {{ z, 0 pigment {{ image_map {{ png \"grey.png\" {extra} }} }} }}"
     );
-    let loaded = load_inner(
-        &scene_path,
-        &source,
-        &LoadOptions::default(),
-        &FileSystem,
-        false,
-    )
-    .unwrap();
+    let loaded = load_beside(dir.path(), &source);
     let pigment = &loaded.scene.objects[0].texture.as_ref().unwrap().pigment;
     evaluate_pigment(pigment, DVec3::new(0.5, 0.5, 0.0)).rgb.x
 }
@@ -314,17 +311,9 @@ fn a_jpeg_image_map_reads_like_a_png() {
     image::RgbImage::from_pixel(8, 8, image::Rgb([128, 128, 128]))
         .save(dir.path().join("grey.jpg"))
         .unwrap();
-    let scene_path = dir.path().join("scene.pov").display().to_string();
     let source = "#version 3.7; global_settings { assumed_gamma 1 }\n\
                   plane { z, 0 pigment { image_map { jpeg \"grey.jpg\" } } }";
-    let loaded = load_inner(
-        &scene_path,
-        source,
-        &LoadOptions::default(),
-        &FileSystem,
-        false,
-    )
-    .unwrap();
+    let loaded = load_beside(dir.path(), source);
     let pigment = &loaded.scene.objects[0].texture.as_ref().unwrap().pigment;
     let v = evaluate_pigment(pigment, DVec3::new(0.5, 0.5, 0.0)).rgb.x;
     let linear = |c: f64| ((c / 255.0 + 0.055) / 1.055f64).powf(2.4);
