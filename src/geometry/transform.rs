@@ -92,6 +92,16 @@ impl Transform {
         self.inverse.transform_vector3(v)
     }
 
+    /// A world ray in the object's space. The direction is not normalised, so a distance
+    /// along the local ray is the same distance along the world one.
+    #[inline]
+    pub fn inverse_ray(&self, ray: &super::Ray) -> super::Ray {
+        super::Ray::new(
+            self.inverse_point(ray.origin),
+            self.inverse_vector(ray.direction),
+        )
+    }
+
     /// Object-space normal to world space (inverse transpose), not normalised.
     pub fn normal(&self, n: DVec3) -> DVec3 {
         self.inverse.matrix3.transpose() * n

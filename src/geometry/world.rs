@@ -575,8 +575,7 @@ impl World {
         if p.transform == NO_TRANSFORM {
             *ray
         } else {
-            let t = &self.transforms[p.transform as usize];
-            Ray::new(t.inverse_point(ray.origin), t.inverse_vector(ray.direction))
+            self.transforms[p.transform as usize].inverse_ray(ray)
         }
     }
 

@@ -42,10 +42,7 @@ impl Instance {
     }
 
     fn local_ray(&self, ray: &Ray) -> Ray {
-        Ray::new(
-            self.transform.inverse_point(ray.origin),
-            self.transform.inverse_vector(ray.direction),
-        )
+        self.transform.inverse_ray(ray)
     }
 
     /// The hit as the prototype knows it.
