@@ -95,7 +95,10 @@ pub fn perturb(normal: &Normal, p: DVec3, n: DVec3) -> DVec3 {
 /// the two diagonal neighbours in the row below give d1 = h(i+1, j+1) - h, d2 = h(i-1,
 /// j+1) - h; the normal becomes N + s (d1 - d2) / 2 u + s (d1 + d2) / 2 v renormalised, with
 /// s the bump_size, u = Y x N and v = N x u for the pattern's y axis Y (the x tilt follows
-/// the side seen, the y tilt does not). Outside a `once` image the normal is unchanged.
+/// the side seen, the y tilt does not). All this happens in pattern space: the normal goes
+/// there and back as normals do, so a scale that stretches z more than x and y flattens the
+/// bumps (measured on a plane seen along z: `scale <2, 2, 1>` halves the tilt, `scale 2`
+/// leaves it). Outside a `once` image the normal is unchanged.
 fn bump_map_normal(normal: &Normal, b: &crate::scene::BumpMap, q: DVec3, n: DVec3) -> DVec3 {
     let im = &b.image;
     let (w, h) = (im.width as i64, im.height as i64);
@@ -105,20 +108,36 @@ fn bump_map_normal(normal: &Normal, b: &crate::scene::BumpMap, q: DVec3, n: DVec
     if b.once && !((0.0..1.0).contains(&q.x) && (0.0..1.0).contains(&q.y)) {
         return n;
     }
-    let (i, j) = super::pigment::nearest_pixel(
-        (q.x.rem_euclid(1.0), q.y.rem_euclid(1.0)),
-        (im.width, im.height),
-    );
-    let (i, j) = (i as i64, j as i64);
-    let at =
-        |i: i64, j: i64| f64::from(im.heights[(j.rem_euclid(h) * w + i.rem_euclid(w)) as usize]);
-    let h0 = at(i, j);
-    let (d1, d2) = (at(i + 1, j + 1) - h0, at(i - 1, j + 1) - h0);
+    let (u, v) = (q.x.rem_euclid(1.0), q.y.rem_euclid(1.0));
+    let height = |x: f64, y: f64| -> f64 {
+        let at = |i: i64, j: i64| {
+            f64::from(im.heights[(j.rem_euclid(h) * w + i.rem_euclid(w)) as usize])
+        };
+        let (x0, y0) = (x.floor(), y.floor());
+        let (i, j) = (x0 as i64, y0 as i64);
+        if !b.bilinear {
+            return at(i, j);
+        }
+        let (fx, fy) = (x - x0, y - y0);
+        let top = at(i, j) * (1.0 - fx) + at(i + 1, j) * fx;
+        let bottom = at(i, j + 1) * (1.0 - fx) + at(i + 1, j + 1) * fx;
+        top * (1.0 - fy) + bottom * fy
+    };
+    // Pixel coordinates: the nearest pixel's, or (bilinear) measured from pixel centres.
+    let (x, y) = if b.bilinear {
+        (u * w as f64 - 0.5, (1.0 - v) * h as f64 - 0.5)
+    } else {
+        let (i, j) = super::pigment::nearest_pixel((u, v), (im.width, im.height));
+        (i as f64, j as f64)
+    };
+    let h0 = height(x, y);
+    let (d1, d2) = (height(x + 1.0, y + 1.0) - h0, height(x - 1.0, y + 1.0) - h0);
     let s = normal.amount;
-    let y = normal.transform.vector(DVec3::Y).normalize_or(DVec3::Y);
-    let across = y.cross(n).normalize_or_zero();
-    let up = n.cross(across);
-    (n + across * (s * (d1 - d2) / 2.0) + up * (s * (d1 + d2) / 2.0)).normalize_or(n)
+    let m = normal.transform.inverse_normal(n).normalize_or_zero();
+    let across = DVec3::Y.cross(m).normalize_or_zero();
+    let up = m.cross(across);
+    let tilted = m + across * (s * (d1 - d2) / 2.0) + up * (s * (d1 + d2) / 2.0);
+    normal.transform.normal(tilted).normalize_or(n)
 }
 
 /// `normal_map`: the two entries around the pattern value each perturb the normal, and
@@ -380,6 +399,7 @@ mod bump_map_tests {
         let kind = PatternKind::BumpMap(BumpMap {
             image: std::sync::Arc::new(image),
             once: false,
+            bilinear: false,
         });
         let mut normal = Normal::new(Pattern::new(kind));
         normal.amount = 1.0;
@@ -393,5 +413,33 @@ mod bump_map_tests {
             let e = DVec3::from_array(expected);
             assert!((n - e).length() < 2e-3, "({row}, {col}): {n} against {e}");
         }
+    }
+
+    /// One step of height between two pixels, on the plane z = 0 seen from -z, under a
+    /// pattern transform: POV-Ray perturbs the normal in pattern space (measured: `scale
+    /// <2, 2, 1>` halves the tilt that `scale 2` gives, `scale <2, 2, 4>` doubles it).
+    #[test]
+    fn the_normal_is_perturbed_in_pattern_space() {
+        let image = HeightImage {
+            width: 2,
+            height: 1,
+            heights: vec![0.0, 1.0],
+        };
+        let kind = PatternKind::BumpMap(BumpMap {
+            image: std::sync::Arc::new(image),
+            once: false,
+            bilinear: false,
+        });
+        let tilt = |scale: DVec3| {
+            let mut normal = Normal::new(Pattern::new(kind.clone()));
+            normal.amount = 0.5;
+            normal.transform = crate::geometry::Transform::scale(scale).expect("non-zero");
+            let n = perturb(&normal, scale * DVec3::new(0.25, 0.5, 0.0), -DVec3::Z);
+            n.truncate().length() / n.z.abs()
+        };
+        let uniform = tilt(DVec3::splat(2.0));
+        assert!((uniform - tilt(DVec3::ONE)).abs() < 1e-12);
+        assert!((tilt(DVec3::new(2.0, 2.0, 1.0)) - uniform / 2.0).abs() < 1e-12);
+        assert!((tilt(DVec3::new(2.0, 2.0, 4.0)) - uniform * 2.0).abs() < 1e-12);
     }
 }

@@ -102,6 +102,11 @@ impl Transform {
         )
     }
 
+    /// World-space normal to object space (the transpose), not normalised.
+    pub fn inverse_normal(&self, n: DVec3) -> DVec3 {
+        self.forward.matrix3.transpose() * n
+    }
+
     /// Object-space normal to world space (inverse transpose), not normalised.
     pub fn normal(&self, n: DVec3) -> DVec3 {
         self.inverse.matrix3.transpose() * n

@@ -494,8 +494,8 @@ pub struct IndexImage {
     pub index: Vec<u8>,
 }
 
-/// `bump_map`'s image as heights in [0, 1]: a grey PNG's value / max, a colour one's
-/// brightness, or with `use_index` a palette index / 255.
+/// `bump_map`'s image as heights: a grey PNG's value / max or a colour one's brightness
+/// (in [0, 1]), or with `use_index` the palette index itself (0 to 255).
 #[derive(Debug, PartialEq)]
 pub struct HeightImage {
     pub width: usize,
@@ -503,11 +503,15 @@ pub struct HeightImage {
     pub heights: Vec<f32>,
 }
 
-/// `bump_map { png "file" [once] [bump_size s] [use_index] }`, mapped onto the x-y plane.
+/// `bump_map { png "file" [once] [interpolate n] [bump_size s] [use_index] }`, mapped
+/// onto the x-y plane.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BumpMap {
     pub image: std::sync::Arc<HeightImage>,
     pub once: bool,
+    /// Heights bilinear between pixel centres (`interpolate 2` or 4) instead of the
+    /// nearest pixel's.
+    pub bilinear: bool,
 }
 
 /// `material_map`'s image, mapped as an image_map is, and the number of its textures

@@ -108,9 +108,9 @@ impl Evaluator<'_> {
 }
 
 impl Evaluator<'_> {
-    /// After `bump_map` in a normal: `{ [png] "file" [once] [map_type 0] [interpolate 0]
-    /// [use_color] [bump_size s] }`, the x-y plane's heights (bump_size 1 unless given).
-    /// Other map types, interpolation and use_index are refused: not yet measured.
+    /// After `bump_map` in a normal: `{ [png] "file" [once] [map_type 0] [interpolate n]
+    /// [use_color | use_index] [bump_size s] }`, the x-y plane's heights (bump_size 1
+    /// unless given). Other map types are refused: not yet measured.
     pub(super) fn bump_map_body(&mut self) -> R<Normal> {
         let open = self.expect(Punct::LBrace, "after `bump_map`")?;
         self.enter(open.span)?;
@@ -123,7 +123,7 @@ impl Evaluator<'_> {
 
     fn bump_map_items(&mut self) -> R<Normal> {
         let (path, span) = self.png_file("bump_map")?;
-        let (mut once, mut use_index, mut size) = (false, false, 1.0);
+        let (mut once, mut use_index, mut bilinear, mut size) = (false, false, false, 1.0);
         loop {
             let tok = self.peek()?;
             if tok.is_punct(Punct::RBrace) {
@@ -131,21 +131,22 @@ impl Evaluator<'_> {
             }
             match tok.ident() {
                 Some("once") => once = self.next().map(|_| true)?,
-                // Heights from palette indices do not match POV-Ray's yet (index / 255
-                // tilts far more than its render): refused until measured.
-                Some("use_index") => {
-                    return Err(self.unsupported(&tok, "use_index in a bump_map"));
-                }
+                Some("use_index") => use_index = self.next().map(|_| true)?,
                 Some("use_color" | "use_colour") => use_index = self.next().map(|_| false)?,
                 Some("bump_size") => {
                     self.next()?;
                     size = self.float()?;
                 }
-                Some(w @ ("map_type" | "interpolate")) => {
-                    let w = w.to_string();
+                // 2 (bilinear) and 4 (normalised distance) both blend neighbours, as in
+                // image maps.
+                Some("interpolate") => {
+                    self.next()?;
+                    bilinear = self.float()? != 0.0;
+                }
+                Some("map_type") => {
                     self.next()?;
                     if self.float()? != 0.0 {
-                        return Err(self.unsupported(&tok, &format!("{w} in a bump_map")));
+                        return Err(self.unsupported(&tok, "map_type in a bump_map"));
                     }
                 }
                 _ => return Err(self.stray_in_block(&tok, "the bump_map")),
@@ -155,6 +156,7 @@ impl Evaluator<'_> {
         let kind = PatternKind::BumpMap(BumpMap {
             image: Arc::new(image),
             once,
+            bilinear,
         });
         let mut normal = Normal::new(self.new_pattern(kind));
         normal.amount = size;
@@ -171,38 +173,58 @@ impl Evaluator<'_> {
     }
 }
 
-/// A bump map's heights (`use_index`: palette indices / 255, not yet reachable), else grey / max or a
-/// colour's brightness (0.297 r + 0.589 g + 0.114 b), from the stored values.
+/// A bump map's heights from the stored values: a colour's brightness, or with `use_index`
+/// the palette index itself. Measured with POV-Ray 3.7 (normals recovered from three renders
+/// of ramps on a plane):
+/// - a palette ramp of indices 0 to 15 with grey entries, `use_index bump_size 0.004`, tilts
+///   as the grey ramp 0 to 15 / 255 with bump_size 1.02, to 1e-4 in every pixel;
+/// - the steps of an 8-bit grey ramp 0 to 255 are 0, 1 or 2 / 255, not 1: the brightness
+///   0.297 r + 0.589 g + 0.114 b is summed in single precision and cut down to a whole
+///   number of 1 / 255 (`quantised_brightness` fits all 254 pixels, the exact value 71);
+/// - a 16-bit ramp is smooth (steps of 37 / 65535 measured as 0.144 / 255).
 fn load_heights(path: &std::path::Path, use_index: bool) -> Result<HeightImage, String> {
     if use_index {
         let im = load_indices(path)?;
         return Ok(HeightImage {
             width: im.width,
             height: im.height,
-            heights: im.index.iter().map(|&i| f32::from(i) / 255.0).collect(),
+            heights: im.index.iter().map(|&i| f32::from(i)).collect(),
         });
     }
     let img = image::open(path).map_err(|e| format!("cannot read \"{}\": {e}", path.display()))?;
     let (width, height) = (img.width() as usize, img.height() as usize);
-    let heights = match img {
-        image::DynamicImage::ImageLuma8(g) => g.pixels().map(|p| f32::from(p[0]) / 255.0).collect(),
-        image::DynamicImage::ImageLuma16(g) => {
-            g.pixels().map(|p| f32::from(p[0]) / 65535.0).collect()
-        }
-        other => other
-            .to_rgb8()
-            .pixels()
-            .map(|p| {
-                (0.297 * f32::from(p[0]) + 0.589 * f32::from(p[1]) + 0.114 * f32::from(p[2]))
-                    / 255.0
-            })
-            .collect(),
+    let sixteen = matches!(
+        img,
+        image::DynamicImage::ImageLuma16(_)
+            | image::DynamicImage::ImageLumaA16(_)
+            | image::DynamicImage::ImageRgb16(_)
+            | image::DynamicImage::ImageRgba16(_)
+    );
+    let heights = if sixteen {
+        let max = f32::from(u16::MAX);
+        let rgb = img.to_rgb16();
+        rgb.pixels()
+            .map(|p| quantised_brightness(p.0.map(|c| f32::from(c) / max), max))
+            .collect()
+    } else {
+        let max = f32::from(u8::MAX);
+        let rgb = img.to_rgb8();
+        rgb.pixels()
+            .map(|p| quantised_brightness(p.0.map(|c| f32::from(c) / max), max))
+            .collect()
     };
     Ok(HeightImage {
         width,
         height,
         heights,
     })
+}
+
+/// A colour's brightness as POV-Ray takes a bump map's height from it: in single precision,
+/// cut down to a whole number of steps of the file's depth (`max` 255 or 65535).
+fn quantised_brightness([r, g, b]: [f32; 3], max: f32) -> f32 {
+    let y = 0.297_f32 * r + 0.589_f32 * g + 0.114_f32 * b;
+    (y * max).floor() / max
 }
 
 /// A PNG's pixels as numbers: palette indices as stored, or the red byte of 8-bit colour.
@@ -227,7 +249,8 @@ fn load_indices(path: &std::path::Path) -> Result<IndexImage, String> {
         (png::ColorType::Rgb | png::ColorType::Rgba, 8) => false,
         _ => {
             return Err(cannot(
-                "a material_map reads palette or 8-bit colour PNGs only".into(),
+                "numbers (material_map, use_index) are read from palette or 8-bit colour PNGs only"
+                    .into(),
             ));
         }
     };
@@ -249,4 +272,29 @@ fn load_indices(path: &std::path::Path) -> Result<IndexImage, String> {
         height: h,
         index,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::quantised_brightness;
+
+    /// The heights POV-Ray 3.7 gives the grey values 0 to 15 of an 8-bit bump map, in
+    /// steps of 1 / 255, recovered from renders of a ramp through three lights.
+    const MEASURED: [u8; 16] = [0, 1, 2, 2, 4, 4, 5, 7, 8, 9, 9, 11, 11, 13, 14, 15];
+
+    #[test]
+    fn grey_heights_are_cut_as_povray_cuts_them() {
+        for (k, &expected) in MEASURED.iter().enumerate() {
+            let g = k as f32 / 255.0;
+            let h = quantised_brightness([g; 3], 255.0) * 255.0;
+            assert_eq!(h, f32::from(expected), "grey {k}");
+        }
+    }
+
+    #[test]
+    fn sixteen_bit_heights_keep_their_depth() {
+        let g = 1037.0 / 65535.0;
+        let h = quantised_brightness([g; 3], 65535.0) * 65535.0;
+        assert!((1036.0..=1037.0).contains(&h), "{h}");
+    }
 }

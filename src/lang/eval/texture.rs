@@ -151,6 +151,15 @@ const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
         p.noise_generator = ev.float()?.clamp(1.0, 3.0) as u8;
         Ok(())
     }),
+    // A density_file's interpolation may come after its other modifiers (a normal's
+    // amount, for instance).
+    ("interpolate", |ev, p| {
+        let trilinear = ev.df3_interpolation()?;
+        if let PatternKind::DensityFile(grid) = &mut p.kind {
+            std::sync::Arc::make_mut(grid).trilinear = trilinear;
+        }
+        Ok(())
+    }),
     ("brick_size", |ev, p| {
         let v = ev.vector3()?;
         if let PatternKind::Brick { size, .. } = &mut p.kind {
@@ -590,15 +599,21 @@ impl Evaluator<'_> {
         let bytes = std::fs::read(&path)
             .map_err(|e| self.err(span, format!("cannot read \"{name}\": {e}")))?;
         let mut grid = read_df3(&bytes).map_err(|e| self.err(span, format!("\"{name}\": {e}")))?;
-        if self.peek()?.is_ident("interpolate") {
-            let tok = self.next()?;
-            let k = self.float()?;
-            if k == 2.0 {
-                return Err(self.unsupported(&tok, "tricubic df3 interpolation"));
-            }
-            grid.trilinear = k == 1.0;
+        if self.eat_ident("interpolate")? {
+            grid.trilinear = self.df3_interpolation()?;
         }
         Ok(grid)
+    }
+
+    /// The number after `interpolate` of a density_file: 1 is trilinear, 0 the nearest
+    /// voxel; 2 (tricubic) is refused.
+    fn df3_interpolation(&mut self) -> R<bool> {
+        let tok = self.peek()?;
+        let k = self.float()?;
+        if k == 2.0 {
+            return Err(self.unsupported(&tok, "tricubic df3 interpolation"));
+        }
+        Ok(k == 1.0)
     }
 
     fn pigment_body_from_keyword(&mut self) -> R<Pigment> {
