@@ -170,6 +170,14 @@ fn image_uv(map_type: MapType, p: DVec3) -> (f64, f64) {
             }
         }
         MapType::Cylindrical => ((p.z.atan2(p.x) / TAU).rem_euclid(1.0), p.y),
+        // Measured with an image whose pixels hold their own column and row, read on the
+        // planes y = 0 and +-0.3: u as around a cylinder; v is 0.5 on the outer equator, 0
+        // (and 1) on the inner one, and grows going up the outside.
+        MapType::Torus => {
+            let r = p.x.hypot(p.z);
+            let u = (p.z.atan2(p.x) / TAU).rem_euclid(1.0);
+            (u, 0.5 + p.y.atan2(r - 1.0) / TAU)
+        }
     }
 }
 
@@ -235,6 +243,7 @@ mod material_map_tests {
             width: 12,
             height: 1,
             index: (0..12).collect(),
+            palette: 0,
         };
         let m = MaterialImage {
             image: std::sync::Arc::new(image),

@@ -319,3 +319,82 @@ fn a_jpeg_image_map_reads_like_a_png() {
     let linear = |c: f64| ((c / 255.0 + 0.055) / 1.055f64).powf(2.4);
     assert!(v > linear(127.0) && v < linear(129.0), "{v}");
 }
+
+/// A two-entry palette PNG (red, green) named `name` in `dir`.
+fn write_palette_png(dir: &std::path::Path, name: &str) {
+    let file = std::fs::File::create(dir.join(name)).unwrap();
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), 2, 1);
+    encoder.set_color(png::ColorType::Indexed);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_palette(vec![255, 0, 0, 0, 255, 0]);
+    encoder
+        .write_header()
+        .unwrap()
+        .write_image_data(&[0, 1])
+        .unwrap();
+}
+
+/// `transmit` and `filter` of palette entries, in the order written (POV-Ray 3.7.0.10 on
+/// this palette in front of blue: `transmit all 0.3 transmit 1, 0.5` shows 0.3 and 0.5;
+/// the other order 0.3 and 0.3; `filter 1, 0.5` filters only the green entry).
+#[test]
+fn palette_entries_take_filter_and_transmit_in_order() {
+    use crate::appearance::pigment::evaluate_pigment;
+    use glam::DVec3;
+    let dir = crate::study::TempDir::new("palette-edits").unwrap();
+    write_palette_png(dir.path(), "pal.png");
+    let pixels = |items: &str| {
+        let source =
+            format!("plane {{ z, 0 pigment {{ image_map {{ png \"pal.png\" {items} }} }} }}");
+        let loaded = load_beside(dir.path(), &source);
+        let pigment = &loaded.scene.objects[0].texture.as_ref().unwrap().pigment;
+        [0.25, 0.75].map(|x| {
+            let c = evaluate_pigment(pigment, DVec3::new(x, 0.5, 0.0));
+            (c.filter, c.transmit)
+        })
+    };
+    assert_eq!(pixels("transmit 1, 0.5"), [(0.0, 0.0), (0.0, 0.5)]);
+    assert_eq!(
+        pixels("transmit all 0.3 transmit 1, 0.5"),
+        [(0.0, 0.3), (0.0, 0.5)]
+    );
+    assert_eq!(
+        pixels("transmit 1, 0.5 transmit all 0.3"),
+        [(0.0, 0.3), (0.0, 0.3)]
+    );
+    assert_eq!(pixels("filter 1 0.5"), [(0.0, 0.0), (0.5, 0.0)]);
+}
+
+/// An entry of a colour image, or past the palette's end, is a positioned error (POV-Ray
+/// refuses both too).
+#[test]
+fn palette_entries_out_of_place_are_positioned_errors() {
+    let dir = crate::study::TempDir::new("palette-errors").unwrap();
+    write_palette_png(dir.path(), "pal.png");
+    image::RgbImage::new(2, 1)
+        .save(dir.path().join("rgb.png"))
+        .unwrap();
+    let scene_path = dir.path().join("scene.pov").display().to_string();
+    for (file, message) in [
+        ("rgb.png", "needs a palette image"),
+        (
+            "pal.png",
+            "palette entry 2 is out of range: the palette has 2 entries",
+        ),
+    ] {
+        let source = format!(
+            "plane {{ z, 0 pigment {{\n  image_map {{ png \"{file}\" transmit 2, 0.5 }} }} }}"
+        );
+        let Err(e) = load_inner(
+            &scene_path,
+            &source,
+            &LoadOptions::default(),
+            &FileSystem,
+            false,
+        ) else {
+            panic!("{file}: accepted");
+        };
+        assert!(e.message.contains(message), "{file}: {}", e.message);
+        assert_eq!((e.line(), e.column()), (Some(2), Some(38)), "{file}");
+    }
+}

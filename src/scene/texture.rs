@@ -475,10 +475,13 @@ pub enum MapType {
     Spherical,
     /// 2: around the y axis, y from 0 to 1.
     Cylindrical,
+    /// 5: around a torus of major radius 1 about the y axis, u the angle around the axis
+    /// and v the angle around the tube.
+    Torus,
 }
 
 /// Decoded pixels, linear (PNG's sRGB decoded), row 0 at the top.
-#[derive(Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ImageData {
     pub width: usize,
     pub height: usize,
@@ -492,6 +495,8 @@ pub struct IndexImage {
     pub width: usize,
     pub height: usize,
     pub index: Vec<u8>,
+    /// The palette's number of entries; 0 for a colour image.
+    pub palette: usize,
 }
 
 /// `bump_map`'s image as heights: a grey PNG's value / max or a colour one's brightness

@@ -169,7 +169,7 @@ impl Evaluator<'_> {
     fn map_type_number(&mut self, tok: &super::super::syntax::Token) -> R<MapType> {
         let n = self.float()?;
         super::texture::map_type_of(n)
-            .ok_or_else(|| self.unsupported(tok, "map_type other than 0, 1, 2"))
+            .ok_or_else(|| self.unsupported(tok, "map_type other than 0, 1, 2, 5"))
     }
 }
 
@@ -228,12 +228,13 @@ fn quantised_brightness([r, g, b]: [f32; 3], max: f32) -> f32 {
 }
 
 /// A PNG's pixels as numbers: palette indices as stored, or the red byte of 8-bit colour.
-fn load_indices(path: &std::path::Path) -> Result<IndexImage, String> {
+pub(super) fn load_indices(path: &std::path::Path) -> Result<IndexImage, String> {
     let cannot = |e: String| format!("cannot read \"{}\": {e}", path.display());
     let file = std::fs::File::open(path).map_err(|e| cannot(e.to_string()))?;
     let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
     decoder.set_transformations(png::Transformations::IDENTITY);
     let mut reader = decoder.read_info().map_err(|e| cannot(e.to_string()))?;
+    let entries = reader.info().palette.as_ref().map_or(0, |p| p.len() / 3);
     let size = reader
         .output_buffer_size()
         .ok_or_else(|| cannot("too large".into()))?;
@@ -271,6 +272,7 @@ fn load_indices(path: &std::path::Path) -> Result<IndexImage, String> {
         width: w,
         height: h,
         index,
+        palette: entries,
     })
 }
 

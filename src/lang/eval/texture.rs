@@ -1663,6 +1663,7 @@ pub(super) fn map_type_of(n: f64) -> Option<MapType> {
         0 => Some(MapType::Planar),
         1 => Some(MapType::Spherical),
         2 => Some(MapType::Cylindrical),
+        5 => Some(MapType::Torus),
         _ => None,
     }
 }
@@ -1852,6 +1853,80 @@ impl Evaluator<'_> {
         Ok(())
     }
 
+    /// After `filter` or `transmit` in an image block: `all v` or `N[,] v`.
+    fn palette_edit(&mut self, filter: bool) -> R<PaletteEdit> {
+        let entry = if self.eat_ident("all")? {
+            None
+        } else {
+            let at = self.peek()?.span;
+            let n = self.float()?;
+            self.eat(Punct::Comma)?;
+            Some((n, at))
+        };
+        let value = self.float()?;
+        Ok(PaletteEdit {
+            filter,
+            entry,
+            value,
+        })
+    }
+
+    /// The image block's `filter` and `transmit` items, in the order written. Measured on a
+    /// two-entry palette: `N, v` sets entry N, `all v` sets every entry (a later `all`
+    /// overrides an entry set before it); an entry past the palette's end, or any entry of
+    /// a colour image, is an error. Without entries, `all` adds to every pixel.
+    fn apply_palette_edits(
+        &mut self,
+        source: &ImageSource,
+        im: &mut ImageMap,
+        edits: &[PaletteEdit],
+    ) -> R<()> {
+        let Some((_, first)) = edits.iter().find_map(|e| e.entry) else {
+            for e in edits {
+                *(if e.filter {
+                    &mut im.filter_all
+                } else {
+                    &mut im.transmit_all
+                }) = e.value;
+            }
+            return Ok(());
+        };
+        let indices = super::material_map::load_indices(&source.path)
+            .map_err(|e| self.err(source.span, e))?;
+        if indices.palette == 0 {
+            return Err(self.err(
+                first,
+                "filter or transmit of one palette entry needs a palette image",
+            ));
+        }
+        let data = std::sync::Arc::make_mut(&mut im.image);
+        for e in edits {
+            let target = match e.entry {
+                None => None,
+                Some((n, span)) if n < 0.0 || n >= indices.palette as f64 => {
+                    return Err(self.err(
+                        span,
+                        format!(
+                            "palette entry {n} is out of range: the palette has {} entries",
+                            indices.palette
+                        ),
+                    ));
+                }
+                Some((n, _)) => Some(n as u8),
+            };
+            for (c, &i) in data.pixels.iter_mut().zip(&indices.index) {
+                if target.is_none_or(|t| t == i) {
+                    *(if e.filter {
+                        &mut c.filter
+                    } else {
+                        &mut c.transmit
+                    }) = e.value;
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// `{ png "file" ... }` after `image_map`, or (`data`) after `image_pattern`, whose
     /// values POV-Ray reads as they are in the file, without gamma (measured: grey 128
     /// gives 0.502 in a 3.7 scene), and which may say `use_alpha` (the flag returned).
@@ -1861,17 +1936,20 @@ impl Evaluator<'_> {
         let mut use_alpha = false;
         let r = (|| -> R<ImageMap> {
             let (mut im, source) = self.image_file(data)?;
+            let mut edits = Vec::new();
             loop {
                 let tok = self.peek()?;
                 if tok.is_punct(Punct::RBrace) {
+                    self.apply_palette_edits(&source, &mut im, &edits)?;
                     return Ok(im);
                 }
                 match tok.ident() {
                     Some("map_type") => {
                         self.next()?;
                         let (m, s) = self.expr()?;
-                        im.map_type = map_type_of(self.to_float(&m, s)?)
-                            .ok_or_else(|| self.unsupported(&tok, "map_type other than 0, 1, 2"))?;
+                        im.map_type = map_type_of(self.to_float(&m, s)?).ok_or_else(|| {
+                            self.unsupported(&tok, "map_type other than 0, 1, 2, 5")
+                        })?;
                     }
                     Some("interpolate") => {
                         self.next()?;
@@ -1884,18 +1962,9 @@ impl Evaluator<'_> {
                         im.once = true;
                     }
                     Some(w @ ("filter" | "transmit")) => {
-                        let w = w.to_string();
+                        let filter = w == "filter";
                         self.next()?;
-                        if !self.eat_ident("all")? {
-                            let t = self.peek()?;
-                            return Err(self.unsupported(&t, &format!("{w} of one palette entry")));
-                        }
-                        let f = self.float()?;
-                        if w == "filter" {
-                            im.filter_all = f;
-                        } else {
-                            im.transmit_all = f;
-                        }
+                        edits.push(self.palette_edit(filter)?);
                     }
                     Some("gamma") => self.image_gamma(&source, &mut im)?,
                     Some("use_alpha") if data => {
@@ -1934,6 +2003,14 @@ enum ImageGamma {
 }
 
 /// Where an image block's pixels came from, to read them again with another gamma.
+/// One `filter` or `transmit` item of an image block: `all` (no entry) or a palette entry,
+/// with where its number was written.
+struct PaletteEdit {
+    filter: bool,
+    entry: Option<(f64, crate::lang::Span)>,
+    value: f64,
+}
+
 struct ImageSource {
     path: std::path::PathBuf,
     working: ImageGamma,
