@@ -398,3 +398,36 @@ fn palette_entries_out_of_place_are_positioned_errors() {
         assert_eq!((e.line(), e.column()), (Some(2), Some(38)), "{file}");
     }
 }
+
+/// `uv_mapping` among an object's modifiers maps the textures that follow as `texture {
+/// uv_mapping ... }` does (POV-Ray 3.7.0.10 renders the three the same, pixel for pixel),
+/// and after a texture it is refused, as POV-Ray refuses it.
+#[test]
+fn object_uv_mapping_is_the_texture_s() {
+    let texture = |source: &str| {
+        let loaded = load_scene_source("uv.pov", source, &LoadOptions::default()).unwrap();
+        loaded.scene.objects[0].texture.clone()
+    };
+    let inner =
+        texture("sphere { 0, 1 texture { uv_mapping pigment { gradient x } } rotate y*30 }");
+    assert!(inner.as_ref().unwrap().pigment.uv_mapping);
+    for outer in [
+        "sphere { 0, 1 uv_mapping texture { pigment { gradient x } } rotate y*30 }",
+        "sphere { 0, 1 uv_mapping pigment { gradient x } rotate y*30 }",
+    ] {
+        assert_eq!(texture(outer), inner, "{outer}");
+    }
+    let e = load_scene_source(
+        "uv.pov",
+        "sphere { 0, 1 pigment { gradient x } uv_mapping }",
+        &LoadOptions::default(),
+    )
+    .err()
+    .expect("refused");
+    assert!(
+        e.message.contains("before the object's texture"),
+        "{}",
+        e.message
+    );
+    assert_eq!(e.column(), Some(38));
+}

@@ -408,6 +408,7 @@ impl Evaluator<'_> {
         let mut textures = 0;
         let mut bounds: Vec<Object> = Vec::new();
         let mut clipped: Vec<Object> = Vec::new();
+        let mut uv_mapping = false;
         loop {
             let tok = self.peek()?;
             if tok.is_punct(punct_close()) {
@@ -428,6 +429,20 @@ impl Evaluator<'_> {
             let known = match word.as_str() {
                 "texture" => {
                     self.texture_layer(object, &mut textures)?;
+                    true
+                }
+                // The textures that follow read the surface's (u, v), as `texture {
+                // uv_mapping ... }` does (measured: the same pixels); POV-Ray refuses it
+                // after a texture.
+                "uv_mapping" => {
+                    if object.texture.is_some() {
+                        return Err(self.err(
+                            tok.span,
+                            "`uv_mapping` must come before the object's texture",
+                        ));
+                    }
+                    self.next()?;
+                    uv_mapping = true;
                     true
                 }
                 "clipped_by" => {
@@ -454,6 +469,10 @@ impl Evaluator<'_> {
                 }
                 w => self.appearance_modifier(object, w)? || self.flag_modifier(object, &tok, w)?,
             };
+            // Marked as read, before later transforms of the object reach it.
+            if uv_mapping && let Some(t) = object.texture.as_mut() {
+                super::texture::mark_uv_mapped(Arc::make_mut(t));
+            }
             if !known {
                 return Err(self.stray_in_block(&tok, what));
             }

@@ -1682,7 +1682,7 @@ fn transform_late_entries(entries: &mut [(f64, Texture)], since_pattern: &Transf
 
 /// `texture { uv_mapping ... }`: the texture's pigments (and its texture map's pattern)
 /// read the surface's (u, v) from here on.
-fn mark_uv_mapped(t: &mut Texture) {
+pub(super) fn mark_uv_mapped(t: &mut Texture) {
     t.pigment.uv_mapping = true;
     if let Some(m) = &mut t.map {
         m.uv_mapping = true;
