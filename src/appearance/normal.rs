@@ -79,14 +79,20 @@ pub fn perturb(normal: &Normal, p: DVec3, n: DVec3) -> DVec3 {
                 -GAIN / normal.accuracy * sum
             }
         };
-    let len = tilt.length();
-    if len == 0.0 || !len.is_finite() {
+    if tilt == DVec3::ZERO || !tilt.is_finite() {
         return n;
     }
-    // The tilt keeps its pattern-space length: POV-Ray's result does not change with the
-    // pattern's scale, only its direction follows the transform.
-    let world = normal.transform.normal(tilt).normalize_or_zero() * len;
-    (n + world).normalize_or(n)
+    in_pattern_space(normal, n, tilt)
+}
+
+/// The unit normal `n` tilted by `tilt` in pattern space: POV-Ray takes the normal there
+/// (by the transpose of the pattern's transform), adds the tilt and brings the sum back as
+/// a normal. A uniform scale changes nothing; measured on `gradient x 0.5` (tilt 0.0667 on
+/// a plane seen along z), `scale <0.1, 1, 1>` and `scale <1, 1, 10>` make it 0.667 and
+/// `scale <1, 1, 0.1>` 0.0067.
+fn in_pattern_space(normal: &Normal, n: DVec3, tilt: DVec3) -> DVec3 {
+    let m = normal.transform.inverse_normal(n).normalize_or(n);
+    normal.transform.normal(m + tilt).normalize_or(n)
 }
 
 /// `bump_map`, measured with POV-Ray 3.7 on a plane seen from either side through three
@@ -136,8 +142,11 @@ fn bump_map_normal(normal: &Normal, b: &crate::scene::BumpMap, q: DVec3, n: DVec
     let m = normal.transform.inverse_normal(n).normalize_or_zero();
     let across = DVec3::Y.cross(m).normalize_or_zero();
     let up = m.cross(across);
-    let tilted = m + across * (s * (d1 - d2) / 2.0) + up * (s * (d1 + d2) / 2.0);
-    normal.transform.normal(tilted).normalize_or(n)
+    in_pattern_space(
+        normal,
+        n,
+        across * (s * (d1 - d2) / 2.0) + up * (s * (d1 + d2) / 2.0),
+    )
 }
 
 /// `normal_map`: the two entries around the pattern value each perturb the normal, and
@@ -412,6 +421,31 @@ mod bump_map_tests {
             let n = perturb(&normal, p, -DVec3::Z);
             let e = DVec3::from_array(expected);
             assert!((n - e).length() < 2e-3, "({row}, {col}): {n} against {e}");
+        }
+    }
+
+    /// `normal { gradient x 0.5 }` on the plane z = 0 seen from -z: POV-Ray's tilt (x over
+    /// z of the normal, recovered through three lights) is 0.0667 under `scale 1` and `scale
+    /// 2`, 0.667 under `scale <0.1, 1, 1>` and `<1, 1, 10>`, 0.0067 under `<1, 1, 0.1>`.
+    #[test]
+    fn scales_that_are_not_uniform_tilt_as_povray_measured() {
+        let measured = [
+            (DVec3::ONE, 0.0667),
+            (DVec3::splat(2.0), 0.0667),
+            (DVec3::new(0.1, 1.0, 1.0), 0.6667),
+            (DVec3::new(1.0, 1.0, 10.0), 0.6667),
+            (DVec3::new(1.0, 1.0, 0.1), 0.0067),
+        ];
+        for (scale, expected) in measured {
+            let mut normal = Normal::new(Pattern::new(PatternKind::Gradient(DVec3::X)));
+            normal.amount = 0.5;
+            normal.transform = crate::geometry::Transform::scale(scale).expect("non-zero");
+            let n = perturb(&normal, DVec3::new(0.05, 0.5, 0.0) * scale, -DVec3::Z);
+            let tilt = n.x.abs() / n.z.abs();
+            assert!(
+                (tilt - expected).abs() < 0.002 * expected.max(0.1),
+                "{scale}: {tilt}"
+            );
         }
     }
 
