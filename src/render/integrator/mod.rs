@@ -331,11 +331,14 @@ impl<'a> Integrator<'a> {
     fn shading(&self, ray: &Ray, hit: &Hit, path: Path) -> Shading<'a> {
         let surface = self.scene.world.surface(ray, hit);
         let d = ray.direction.normalize();
-        // The ray meets the surface from behind, and whether it leaves the interior (the
-        // two differ where parts of one object touch or overlap).
+        // The ray meets the surface from behind, and whether it leaves the interior. As in
+        // POV-Ray, a ray leaves an interior only if it is in it, whichever side it meets:
+        // a ray crossing a disc or polygon from behind enters it (measured in a box of
+        // absorbing media: behind a non-hollow disc facing either way the media stop, behind
+        // a hollow one they go on; leaving on the side seen lost the box's media instead).
         let back = surface.normal.dot(d) > 0.0;
         let material = self.scene.side_material(surface.material, back);
-        let leaving = back || path.interiors.contains(material.interior_id);
+        let leaving = path.interiors.contains(material.interior_id);
         let fade_through = if leaving && material.interior.fade_distance > 0.0 {
             fade(material, hit.t * ray.direction.length())
         } else {
