@@ -95,6 +95,8 @@ pub fn list_index(kind: &PatternKind, p: DVec3) -> usize {
             s.rem_euclid(2.0) as usize
         }
         PatternKind::Hexagon => hexagon(p),
+        PatternKind::Square => square(p),
+        PatternKind::Triangular => triangular(p),
         PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
         PatternKind::MaterialMap(m) => super::pigment::material_index(m, p),
         PatternKind::Object(o) => usize::from(o.holds(p)),
@@ -274,9 +276,11 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
                 0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
             }
         }
-        PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => {
-            list_index(&pattern.kind, p) as f64
-        }
+        PatternKind::Checker
+        | PatternKind::Hexagon
+        | PatternKind::Square
+        | PatternKind::Triangular
+        | PatternKind::Brick { .. } => list_index(&pattern.kind, p) as f64,
     }
 }
 
@@ -414,6 +418,39 @@ fn hexagon(p: DVec3) -> usize {
     if c.is_finite() { c as usize % 3 } else { 0 }
 }
 
+/// Unit squares in the x-z plane. Measured with POV-Ray 3.7 from above: the square at
+/// (0, 0) takes entry 0, (0, 1) entry 1, (1, 1) entry 2 and (1, 0) entry 3, repeating
+/// every two units.
+fn square(p: DVec3) -> usize {
+    if !p.is_finite() {
+        return 0;
+    }
+    let odd = |v: f64| v.floor().rem_euclid(2.0) == 1.0;
+    match (odd(p.x), odd(p.z)) {
+        (false, false) => 0,
+        (false, true) => 1,
+        (true, true) => 2,
+        (true, false) => 3,
+    }
+}
+
+/// Equilateral triangles of side 1 in the x-z plane, one vertex at the origin and edges
+/// along x: the six around the origin take entries 0 to 5 going from +x towards +z.
+/// Measured with POV-Ray 3.7 from above: in lattice coordinates (u, v) with x = u + v / 2,
+/// z = v sqrt(3) / 2, the triangle in cell (i, j) below its diagonal takes entry 0, 4, 2
+/// and the one above it 3, 5, 1 as (i + 2 j) mod 3 is 0, 1, 2.
+fn triangular(p: DVec3) -> usize {
+    if !p.is_finite() {
+        return 0;
+    }
+    let v = p.z * 2.0 / 3f64.sqrt();
+    let u = p.x - v / 2.0;
+    let (i, j) = (u.floor(), v.floor());
+    let above = (u - i) + (v - j) > 1.0;
+    let m = (i + 2.0 * j).rem_euclid(3.0) as usize % 3;
+    if above { [3, 5, 1][m] } else { [0, 4, 2][m] }
+}
+
 /// Bricks of `size` with mortar of width `mortar` at the high end of each brick along
 /// each axis; odd rows (in y) are shifted half a brick in x, even rows in z.
 fn brick(p: DVec3, size: DVec3, mortar: f64) -> usize {
@@ -547,6 +584,27 @@ mod tests {
             };
             assert!((t - want).abs() < 1e-5, "arms {arms} at {p}: {t} vs {want}");
         }
+    }
+
+    #[test]
+    fn square_and_triangular_layout() {
+        let s = |x, z| square(DVec3::new(x, 0.0, z));
+        assert_eq!(
+            [s(0.5, 0.5), s(0.5, 1.5), s(1.5, 1.5), s(1.5, 0.5)],
+            [0, 1, 2, 3]
+        );
+        assert_eq!(s(-0.5, -0.5), 2);
+        let t = |x: f64, z: f64| triangular(DVec3::new(x, 0.0, z));
+        // Centroids of the triangles with a corner at the origin, going round it from +x
+        // towards +z: POV-Ray's entries there (read from its render).
+        let centroid = |deg: f64| {
+            let a = deg.to_radians();
+            t(a.cos() / 3f64.sqrt(), a.sin() / 3f64.sqrt())
+        };
+        assert_eq!(
+            [30.0, 90.0, 150.0, 210.0, 270.0, 330.0].map(centroid),
+            [0, 1, 2, 3, 4, 5]
+        );
     }
 
     #[test]

@@ -177,6 +177,10 @@ pub struct VoxelGrid {
 pub enum PatternKind {
     Checker,
     Hexagon,
+    /// Unit squares in the x-z plane, four entries around each corner.
+    Square,
+    /// Equilateral triangles of side 1 in the x-z plane, six entries.
+    Triangular,
     Brick {
         size: DVec3,
         mortar: f64,
@@ -279,6 +283,8 @@ impl PatternKind {
         match self {
             PatternKind::Checker | PatternKind::Brick { .. } | PatternKind::Object(_) => Some(2),
             PatternKind::Hexagon => Some(3),
+            PatternKind::Square => Some(4),
+            PatternKind::Triangular => Some(6),
             PatternKind::MaterialMap(m) => Some(m.count),
             _ => None,
         }

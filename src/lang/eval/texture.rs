@@ -19,14 +19,7 @@ use crate::scene::{
 type R<T> = Result<T, Diagnostic>;
 
 /// Pattern keywords POV-Ray has that penumbra does not model yet.
-const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "aoi",
-    "facets",
-    "pavement",
-    "square",
-    "tiling",
-    "triangular",
-];
+const UNSUPPORTED_PATTERNS: &[&str] = &["aoi", "facets", "pavement", "tiling"];
 
 /// Pattern keywords penumbra models.
 const PATTERNS: &[&str] = &[
@@ -43,6 +36,8 @@ const PATTERNS: &[&str] = &[
     "average",
     "checker",
     "hexagon",
+    "square",
+    "triangular",
     "brick",
     "gradient",
     "onion",
@@ -472,6 +467,8 @@ impl Evaluator<'_> {
         Ok(match word {
             "checker" => PatternKind::Checker,
             "hexagon" => PatternKind::Hexagon,
+            "square" => PatternKind::Square,
+            "triangular" => PatternKind::Triangular,
             "brick" => PatternKind::Brick {
                 size: DVec3::new(8.0, 3.0, 4.5),
                 mortar: 0.5,
@@ -622,6 +619,12 @@ impl Evaluator<'_> {
 
     /// Up to `n` entries of a list pattern, with POV-Ray's defaults for missing ones.
     fn list_entries(&mut self, n: usize) -> R<Vec<Pigment>> {
+        let first = self.peek()?;
+        let pigments = first.is_ident(self.pigment_word())
+            || matches!(
+                first.ident().and_then(|w| self.lookup(w)),
+                Some(Value::Pigment(_))
+            );
         let mut entries = Vec::new();
         while entries.len() < n {
             match self.list_entry()? {
@@ -630,15 +633,27 @@ impl Evaluator<'_> {
             }
             self.eat(Punct::Comma)?;
         }
-        // POV-Ray's defaults without entries: checker blue, green; hexagon blue, green,
-        // red; brick (mortar, brick) white, red.
+        // POV-Ray's defaults for missing entries (measured): a list of pigments gets the
+        // default pigment (black); a list of colours checker's blue, green, hexagon's blue,
+        // green, red, square's red, green, blue, yellow and triangular's red, green, blue,
+        // yellow, cyan, magenta.
+        let (r, g, b) = (
+            Colour::rgb(1.0, 0.0, 0.0),
+            Colour::rgb(0.0, 1.0, 0.0),
+            Colour::rgb(0.0, 0.0, 1.0),
+        );
+        let (yellow, magenta, cyan) = (
+            Colour::rgb(1.0, 1.0, 0.0),
+            Colour::rgb(1.0, 0.0, 1.0),
+            Colour::rgb(0.0, 1.0, 1.0),
+        );
+        let black = [Colour::BLACK; 6];
         let defaults: &[Colour] = match n {
-            3 => &[
-                Colour::rgb(0.0, 0.0, 1.0),
-                Colour::rgb(0.0, 1.0, 0.0),
-                Colour::rgb(1.0, 0.0, 0.0),
-            ],
-            _ => &[Colour::rgb(0.0, 0.0, 1.0), Colour::rgb(0.0, 1.0, 0.0)],
+            _ if pigments => &black[..n.min(6)],
+            3 => &[b, g, r],
+            4 => &[r, g, b, yellow],
+            6 => &[r, g, b, yellow, cyan, magenta],
+            _ => &[b, g],
         };
         for d in defaults.iter().skip(entries.len()) {
             entries.push(Pigment::solid(*d));
