@@ -11,6 +11,7 @@ pub mod media;
 pub mod mesh_camera;
 pub mod photons;
 pub mod prepared;
+pub mod rainbow;
 pub mod sampler;
 pub mod target;
 

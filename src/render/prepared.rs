@@ -76,6 +76,7 @@ pub struct PreparedScene {
     pub sky_sphere: Option<SkySphere>,
     /// The fogs that apply (distance > 0).
     pub fogs: Vec<crate::scene::Fog>,
+    pub rainbows: Vec<crate::scene::Rainbow>,
     /// The atmospheric media and those of every interior.
     pub media: MediaTable,
     pub settings: GlobalSettings,
@@ -153,6 +154,7 @@ impl PreparedScene {
                 .filter(|f| f.distance > 0.0)
                 .cloned()
                 .collect(),
+            rainbows: scene.rainbows.clone(),
             settings: scene.settings.clone(),
             legacy: scene.legacy(),
             output_gamma: match (scene.legacy(), scene.settings.assumed_gamma) {

@@ -12,6 +12,7 @@ mod object;
 pub mod path_spline;
 mod photons;
 mod radiosity;
+mod rainbow;
 pub mod spline;
 pub mod text;
 mod texture;
@@ -30,6 +31,7 @@ pub use object::{
 };
 pub use photons::{LightPhotons, ObjectPhotons, PhotonSettings};
 pub use radiosity::{GREY_WEIGHTS, Radiosity, RadiosityCache};
+pub use rainbow::Rainbow;
 pub use spline::{
     PrismProfile, Segment, SorSegment, SplineKind, lathe_profile, prism_profile, sor_profile,
 };
@@ -135,6 +137,8 @@ pub struct Scene {
     pub sky_sphere: Option<SkySphere>,
     /// Every `fog { }`, in order (their effects combine: see render::fog).
     pub fogs: Vec<Fog>,
+    /// Every `rainbow { }`, in order.
+    pub rainbows: Vec<Rainbow>,
     /// Every top-level `media { }`: atmospheric media, filling space outside solid objects.
     pub media: Vec<Media>,
     pub settings: GlobalSettings,
@@ -151,6 +155,7 @@ impl Default for Scene {
             background: Colour::BLACK,
             sky_sphere: None,
             fogs: Vec::new(),
+            rainbows: Vec::new(),
             media: Vec::new(),
             settings: GlobalSettings::default(),
             version: 3.7,

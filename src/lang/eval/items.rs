@@ -12,7 +12,7 @@ use crate::scene::{AreaLight, CameraSpec, Light, LightKind, Projection};
 type R<T> = Result<T, Diagnostic>;
 
 /// Features POV-Ray has at the top level that penumbra does not model yet.
-const UNSUPPORTED_ITEMS: &[&str] = &["rainbow", "photons"];
+const UNSUPPORTED_ITEMS: &[&str] = &["photons"];
 
 impl Evaluator<'_> {
     pub(super) fn item(&mut self) -> R<()> {
@@ -39,6 +39,10 @@ impl Evaluator<'_> {
             "fog" => {
                 let fog = self.fog()?;
                 self.scene.fogs.push(fog);
+            }
+            "rainbow" => {
+                let rainbow = self.rainbow()?;
+                self.scene.rainbows.push(rainbow);
             }
             "media" => {
                 let media = self.media()?;

@@ -34,6 +34,7 @@ mod photons;
 mod placement;
 mod poly;
 mod radiosity;
+mod rainbow;
 mod stream;
 mod sweeps;
 mod text;

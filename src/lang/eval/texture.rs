@@ -917,7 +917,7 @@ impl Evaluator<'_> {
     }
 
     /// `{ [v colour] ... }` after `color_map`; entries sorted by value as POV-Ray keeps them.
-    fn colour_map_body(&mut self) -> R<Vec<(f64, Colour)>> {
+    pub(super) fn colour_map_body(&mut self) -> R<Vec<(f64, Colour)>> {
         self.read_map_entries(
             "color_map",
             "colour map",

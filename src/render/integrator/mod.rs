@@ -38,6 +38,7 @@ use super::photons::PhotonMaps;
 use super::prepared::{Material, PreparedScene};
 use super::sampler::PixelSampler;
 use crate::render::fog::{Segment, fog_effect};
+use crate::render::rainbow;
 use direct::ShadedLayer;
 use interiors::InteriorStack;
 use optics::{fade, mirror_direction};
@@ -310,7 +311,8 @@ impl<'a> Integrator<'a> {
         let media = !self.scene.media.is_empty()
             && self.quality >= QUALITY_MEDIA
             && (path.bounces == 0 || self.radiosity.is_some_and(|r| r.media));
-        if (self.scene.fogs.is_empty() && !media) || !path.interiors.in_atmosphere() {
+        let atmosphere = !self.scene.fogs.is_empty() || !self.scene.rainbows.is_empty();
+        if (!atmosphere && !media) || !path.interiors.in_atmosphere() {
             return seen;
         }
         let scale = ray.direction.length();
@@ -324,6 +326,13 @@ impl<'a> Integrator<'a> {
                 .apply(seen)
         } else {
             seen
+        };
+        // Rainbows before fogs: not measured together (no example scene has both).
+        let seen = if self.scene.rainbows.is_empty() {
+            seen
+        } else {
+            let u = rainbow::jitter_number(segment.direction);
+            rainbow::rainbow_effect(&self.scene.rainbows, &segment, u).apply(seen)
         };
         fog_effect(&self.scene.fogs, &segment).apply(seen)
     }
