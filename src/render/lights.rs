@@ -23,6 +23,8 @@ pub struct PreparedLight {
     /// The `light_group` it belongs to (`None`: global).
     pub group: Option<u32>,
     pub photons: crate::scene::LightPhotons,
+    /// `projected_through`'s object, built for ray tests.
+    pub projected_through: Option<std::sync::Arc<crate::geometry::World>>,
 }
 
 #[derive(Clone, Debug)]
@@ -190,6 +192,7 @@ impl PreparedLight {
             lights_media: light.media_interaction && !light.shadowless,
             group: light.group,
             photons: light.photons,
+            projected_through: light.projected_through.as_ref().map(|o| o.0.clone()),
         }
     }
 

@@ -62,6 +62,9 @@ pub struct Light {
     pub group: Option<u32>,
     /// `photons { }`: whether its photons reflect and refract.
     pub photons: super::LightPhotons,
+    /// `projected_through { object }`: the light reaches only points whose ray towards it
+    /// meets the object, as if it shone from there (render::integrator::direct).
+    pub projected_through: Option<super::ObjectPattern>,
 }
 
 impl Light {
@@ -80,6 +83,7 @@ impl Light {
             media_interaction: true,
             group: None,
             photons: super::LightPhotons::default(),
+            projected_through: None,
         }
     }
 }

@@ -416,7 +416,7 @@ impl Evaluator<'_> {
             let word = word.to_string();
             let known = self.area_light_item(&mut d.area, &word)?
                 || self.light_kind_item(&mut d, &word)?
-                || self.light_item(&mut d.light, &tok, &word)?;
+                || self.light_item(&mut d.light, &word)?;
             if known {
                 continue;
             }
@@ -528,7 +528,7 @@ impl Evaluator<'_> {
     }
 
     /// Colour, fading, shadows and `looks_like`; false for other words.
-    fn light_item(&mut self, light: &mut Light, tok: &Token, word: &str) -> R<bool> {
+    fn light_item(&mut self, light: &mut Light, word: &str) -> R<bool> {
         match word {
             "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
                 let (c, _) = self.colour()?;
@@ -575,7 +575,20 @@ impl Evaluator<'_> {
             }
             "photons" => light.photons = self.light_photons(light.photons)?,
             "projected_through" => {
-                self.unsupported_or_skip(tok, word)?;
+                let open = self.block_start("projected_through")?;
+                let value = match self.named_object()? {
+                    Some(o) => o,
+                    None => self.object()?,
+                };
+                self.block_end(open, "projected_through")?;
+                light.projected_through = value.object.map(|object| {
+                    let scene = crate::scene::Scene {
+                        objects: vec![object],
+                        ..crate::scene::Scene::default()
+                    };
+                    let world = crate::render::prepared::PreparedScene::new(&scene).world;
+                    crate::scene::ObjectPattern(std::sync::Arc::new(world))
+                });
             }
             _ => return Ok(false),
         }

@@ -271,7 +271,20 @@ impl Integrator<'_> {
 
     /// What reaches the shading point along one shadow ray (`l` unit, `distance` to the
     /// light's point): the objects' filter, then the fog and media on the way.
+    ///
+    /// A light `projected_through` an object reaches the point only if the ray meets the
+    /// object, and then as if it shone from that meeting point: objects beyond it do not
+    /// shadow (measured: a box between such a light and its object leaves the projected
+    /// spot lit, a box between the object and the wall shadows it; a copy of the object
+    /// in the scene, where the ray meets it, does not shadow it).
     fn light_through(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
+        let distance = match &q.light.projected_through {
+            None => distance,
+            Some(stencil) => match stencil.intersect(&Ray::new(q.origin, l), distance, 0) {
+                Some(hit) => hit.t,
+                None => return DVec3::ZERO,
+            },
+        };
         let filter = self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9), &q.inside);
         if filter == DVec3::ZERO {
             return filter;
