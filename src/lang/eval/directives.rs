@@ -679,10 +679,14 @@ impl Evaluator<'_> {
         self.enter(open.span)?;
         let r = (|| -> R<()> {
             loop {
-                if self.peek()?.is_punct(Punct::RBrace) {
+                // Before peeking: a peek at such a name raises its error.
+                if levels == 1
+                    && let Some(v) = self.unsupported_element()
+                {
+                    out.push(v);
+                } else if self.peek()?.is_punct(Punct::RBrace) {
                     break;
-                }
-                if levels > 1 {
+                } else if levels > 1 {
                     self.array_initializer(out, levels - 1)?;
                 } else {
                     out.push(self.declared_value()?);
@@ -696,6 +700,23 @@ impl Evaluator<'_> {
         r?;
         self.expect(Punct::RBrace, "to close the array values")?;
         Ok(())
+    }
+
+    /// An array element that is only the name of a declaration needing an unsupported
+    /// feature: kept as it is, so that the error comes where the element is used, as for
+    /// the name itself (portfolio/allnormals.pov lists `facets` among thirty normals and
+    /// renders one per frame).
+    fn unsupported_element(&mut self) -> Option<Value> {
+        let name = self.raw_peek(0)?.ident()?;
+        let value @ Value::Unsupported(_) = self.lookup(name)?.clone() else {
+            return None;
+        };
+        let after = self.raw_peek(1)?;
+        if !(after.is_punct(Punct::Comma) || after.is_punct(Punct::RBrace)) {
+            return None;
+        }
+        self.raw_next();
+        Some(value)
     }
 
     fn define_macro(&mut self, span: Span) -> R<()> {

@@ -1062,6 +1062,18 @@ impl Evaluator<'_> {
         Ok(n)
     }
 
+    /// An array element that must be a normal (one needing an unsupported feature reports
+    /// that feature here, where it is used).
+    fn normal_element(&mut self) -> R<Option<Normal>> {
+        match self.expr()? {
+            (Value::Normal(named), _) => Ok(*named),
+            (Value::Unsupported(d), s) => Err(self.err(s, d.message.clone())),
+            (other, s) => {
+                Err(self.err(s, format!("expected a normal, found {}", other.kind_name())))
+            }
+        }
+    }
+
     fn normal_items(&mut self, mut n: Option<Normal>, close: Punct) -> R<Option<Normal>> {
         loop {
             let tok = self.peek()?;
@@ -1081,6 +1093,11 @@ impl Evaluator<'_> {
                 // `normal { Named ... }`: the declared normal, modified by what follows.
                 n = (**named).clone();
                 self.next()?;
+                continue;
+            }
+            if matches!(self.lookup(&word), Some(Value::Array(_))) {
+                // `normal { Normals[i] ... }`
+                n = self.normal_element()?;
                 continue;
             }
             match word.as_str() {
