@@ -3,7 +3,7 @@
 // index; an 8-bit RGB image of this project's (scenes/images) picks by its red byte
 // (numbers 0-5 over 3 textures: the count itself picks the last, larger ones wrap), once
 // over part of a box face (the first texture beyond it), and map_type 1 wraps the palette
-// image round a sphere
+// image round a sphere; an 8-bit grey image (the hills) numbers a tile on the floor
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
@@ -32,4 +32,10 @@ sphere { <1.3, 1, 0.5>, 1
 box { <-0.4, 0, -1.2>, <1.1, 1.3, -0.8>
   texture { material_map { png "images/material_numbers_rgb.png" once texture { Red } texture { Blue } texture { Stripes } }
     translate <-0.4, 0, 0> }
+}
+// An 8-bit grey image's numbers: its values cut as a bump map's heights are, then picked
+// modulo the three textures (the hills' greys run 0 to 255)
+box { <1.4, 0, -2>, <2.8, 0.05, -0.7>
+  texture { material_map { png "images/hf_hills8.png" texture { Red } texture { Blue } texture { Stripes } }
+    rotate x*90 scale 1.4 translate <1.4, 0, -2> }
 }

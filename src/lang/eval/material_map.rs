@@ -1,8 +1,9 @@
 //! `material_map { png "file" [map_type n] [once] [interpolate n] texture {...} ... }`: an
 //! image whose pixels number the textures (read as POV-Ray reads them: a palette image's
-//! index, an 8-bit colour image's red byte; a grey image is refused, its conversion not yet
-//! measured; which texture a number picks is in `appearance::pigment::material_index`). The textures become a list pattern's entries, so the texture machinery
-//! (transforms, normals, finishes) treats them as it treats `checker texture {...}`.
+//! index, an 8-bit colour image's red byte, an 8-bit grey image's value cut as a bump map's
+//! height is; which texture a number picks is in `appearance::pigment::material_index`).
+//! The textures become a list pattern's entries, so the texture machinery (transforms,
+//! normals, finishes) treats them as it treats `checker texture {...}`.
 
 use std::sync::Arc;
 
@@ -227,7 +228,21 @@ fn quantised_brightness([r, g, b]: [f32; 3], max: f32) -> f32 {
     (y * max).floor() / max
 }
 
-/// A PNG's pixels as numbers: palette indices as stored, or the red byte of 8-bit colour.
+/// How a PNG's pixels become numbers.
+#[derive(Clone, Copy)]
+enum NumberKind {
+    /// The palette index as stored.
+    Palette,
+    /// An 8-bit colour image's red byte (measured).
+    Red,
+    /// An 8-bit grey image's value cut as a bump map's height is (measured with 3
+    /// textures over the greys 0 to 11 and 0 to 220 by 20: 0 1 2 2 1 1 2 1 2 0 0 2 and 0 1 0
+    /// 0 1 0 0 1 0 2 1 0, which the grey itself, 0 1 2 2 1 2 0 1 2 ..., misses).
+    Grey,
+}
+
+/// A PNG's pixels as numbers: palette indices as stored, the red byte of 8-bit colour, or
+/// an 8-bit grey's cut brightness.
 pub(super) fn load_indices(path: &std::path::Path) -> Result<IndexImage, String> {
     let cannot = |e: String| format!("cannot read \"{}\": {e}", path.display());
     let file = std::fs::File::open(path).map_err(|e| cannot(e.to_string()))?;
@@ -245,23 +260,31 @@ pub(super) fn load_indices(path: &std::path::Path) -> Result<IndexImage, String>
     let (w, h) = (info.width as usize, info.height as usize);
     let bits = info.bit_depth as usize;
     let channels = info.color_type.samples();
-    let palette = match (info.color_type, bits) {
-        (png::ColorType::Indexed, _) => true,
-        (png::ColorType::Rgb | png::ColorType::Rgba, 8) => false,
+    let kind = match (info.color_type, bits) {
+        (png::ColorType::Indexed, _) => NumberKind::Palette,
+        (png::ColorType::Rgb | png::ColorType::Rgba, 8) => NumberKind::Red,
+        (png::ColorType::Grayscale | png::ColorType::GrayscaleAlpha, 8) => NumberKind::Grey,
         _ => {
             return Err(cannot(
-                "numbers (material_map, use_index) are read from palette or 8-bit colour PNGs only"
+                "numbers (material_map, use_index) are read from palette, 8-bit grey or 8-bit \
+                 colour PNGs only"
                     .into(),
             ));
         }
     };
     let index_at = |row: &[u8], x: usize| -> u8 {
-        if !palette {
-            return row[x * channels];
+        match kind {
+            NumberKind::Red => row[x * channels],
+            NumberKind::Grey => {
+                let g = f32::from(row[x * channels]) / 255.0;
+                (quantised_brightness([g; 3], 255.0) * 255.0) as u8
+            }
+            NumberKind::Palette => {
+                let per = 8 / bits;
+                let shift = 8 - bits * (x % per + 1);
+                ((u16::from(row[x / per]) >> shift) & ((1u16 << bits) - 1)) as u8
+            }
         }
-        let per = 8 / bits;
-        let shift = 8 - bits * (x % per + 1);
-        ((u16::from(row[x / per]) >> shift) & ((1u16 << bits) - 1)) as u8
     };
     let mut index = Vec::with_capacity(w * h);
     for y in 0..h {
@@ -291,6 +314,27 @@ mod tests {
             let h = quantised_brightness([g; 3], 255.0) * 255.0;
             assert_eq!(h, f32::from(expected), "grey {k}");
         }
+    }
+
+    /// POV-Ray 3.7's textures for the greys 0 to 11 of an 8-bit material_map with three
+    /// textures (read from its render).
+    #[test]
+    fn grey_numbers_pick_textures_as_povray_does() {
+        let dir = crate::study::TempDir::new("grey-material").unwrap();
+        let path = dir.path().join("g.png");
+        image::GrayImage::from_fn(12, 1, |x, _| image::Luma([x as u8]))
+            .save(&path)
+            .unwrap();
+        let numbers = super::load_indices(&path).unwrap().index;
+        let picked: Vec<usize> = numbers
+            .iter()
+            .map(|&n| match usize::from(n) {
+                n if n < 3 => n,
+                3 => 2,
+                n => n % 3,
+            })
+            .collect();
+        assert_eq!(picked, [0, 1, 2, 2, 1, 1, 2, 1, 2, 0, 0, 2]);
     }
 
     #[test]
