@@ -417,13 +417,13 @@ fn object_uv_mapping_is_the_texture_s() {
     ] {
         assert_eq!(texture(outer), inner, "{outer}");
     }
-    let e = load_scene_source(
+    let Err(e) = load_scene_source(
         "uv.pov",
         "sphere { 0, 1 pigment { gradient x } uv_mapping }",
         &LoadOptions::default(),
-    )
-    .err()
-    .expect("refused");
+    ) else {
+        panic!("accepted");
+    };
     assert!(
         e.message.contains("before the object's texture"),
         "{}",
