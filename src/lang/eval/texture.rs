@@ -1935,7 +1935,7 @@ impl Evaluator<'_> {
         for e in edits {
             let target = match e.entry {
                 None => None,
-                Some((n, span)) if n < 0.0 || n >= indices.palette as f64 => {
+                Some((n, span)) if !(0.0..indices.palette as f64).contains(&n) => {
                     return Err(self.err(
                         span,
                         format!(
