@@ -37,10 +37,10 @@ pub use spline::{
 };
 pub use texture::{
     BlackHole, BumpMap, Crackle, Finish, Fractal, FractalColouring, FractalFormula, HeightImage,
-    ImageData, ImageMap, IndexImage, Interior, Irid, MapType, MappingKind, MappingWarp,
-    MaterialImage, Normal, ObjectPattern, Orientation, Pattern, PatternKind, Pigment, PigmentKind,
-    Quilted, Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap, Turbulence, VoxelGrid,
-    Warp, Wave,
+    ImageData, ImageMap, IndexImage, Interior, Interpolate, Irid, MapType, MappingKind,
+    MappingWarp, MaterialImage, Normal, ObjectPattern, Orientation, Pattern, PatternKind, Pigment,
+    PigmentKind, Quilted, Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap,
+    Turbulence, VoxelGrid, Warp, Wave,
 };
 
 use glam::DVec3;

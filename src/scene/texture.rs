@@ -535,13 +535,23 @@ pub struct MaterialImage {
     pub count: usize,
 }
 
+/// How an image map reads between its pixels (`interpolate n`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Interpolate {
+    /// The pixel under the point (no `interpolate`, or 0).
+    Nearest,
+    /// `interpolate 2`: bilinear between the four pixel centres around the point.
+    Bilinear,
+    /// `interpolate 4`: those four weighted by the inverse square of their distance.
+    InverseSquare,
+}
+
 /// `image_map { png "file" map_type n interpolate n once filter all f transmit all t }`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ImageMap {
     pub image: std::sync::Arc<ImageData>,
     pub map_type: MapType,
-    /// Bilinear between pixel centres (`interpolate 2`) instead of the nearest pixel.
-    pub bilinear: bool,
+    pub interpolate: Interpolate,
     /// `once`: one copy; outside it the pigment is fully transparent (measured).
     pub once: bool,
     pub filter_all: f64,

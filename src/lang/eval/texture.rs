@@ -1855,7 +1855,7 @@ impl Evaluator<'_> {
         let map = ImageMap {
             image: std::sync::Arc::new(image),
             map_type: MapType::Planar,
-            bilinear: false,
+            interpolate: crate::scene::Interpolate::Nearest,
             once: false,
             filter_all: 0.0,
             transmit_all: 0.0,
@@ -1985,9 +1985,14 @@ impl Evaluator<'_> {
                     }
                     Some("interpolate") => {
                         self.next()?;
-                        // 2 (bilinear) and 4 (normalised distance) both blend neighbours;
-                        // penumbra does bilinear for any non-zero value.
-                        im.bilinear = self.float()? != 0.0;
+                        // 4 weighs the neighbours by inverse squared distance; any other
+                        // number that is not 0 reads as 2, bilinear.
+                        let n = self.float()?;
+                        im.interpolate = match n {
+                            0.0 => crate::scene::Interpolate::Nearest,
+                            4.0 => crate::scene::Interpolate::InverseSquare,
+                            _ => crate::scene::Interpolate::Bilinear,
+                        };
                     }
                     Some("once") => {
                         self.next()?;
