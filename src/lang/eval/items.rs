@@ -581,14 +581,9 @@ impl Evaluator<'_> {
                     None => self.object()?,
                 };
                 self.block_end(open, "projected_through")?;
-                light.projected_through = value.object.map(|object| {
-                    let scene = crate::scene::Scene {
-                        objects: vec![object],
-                        ..crate::scene::Scene::default()
-                    };
-                    let world = crate::render::prepared::PreparedScene::new(&scene).world;
-                    crate::scene::ObjectPattern(std::sync::Arc::new(world))
-                });
+                light.projected_through = value
+                    .object
+                    .map(|object| super::texture::built_for_tests(Some(object)));
             }
             _ => return Ok(false),
         }

@@ -1638,12 +1638,7 @@ impl Evaluator<'_> {
                 return Err(self.expected("an object for the object pattern", &tok));
             }
         };
-        let scene = crate::scene::Scene {
-            objects: value.object.into_iter().collect(),
-            ..crate::scene::Scene::default()
-        };
-        let world = crate::render::prepared::PreparedScene::new(&scene).world;
-        Ok(crate::scene::ObjectPattern(std::sync::Arc::new(world)))
+        Ok(built_for_tests(value.object))
     }
 
     /// The closing brace of an object pattern, after its entries.
@@ -1710,6 +1705,17 @@ fn transform_late_entries(entries: &mut [(f64, Texture)], since_pattern: &Transf
             e.transform_by(since_pattern);
         }
     }
+}
+
+/// An object built on its own, for inside and ray tests (the object pattern, a light's
+/// `projected_through`); none gives an empty world.
+pub(super) fn built_for_tests(object: Option<crate::scene::Object>) -> crate::scene::ObjectPattern {
+    let scene = crate::scene::Scene {
+        objects: object.into_iter().collect(),
+        ..crate::scene::Scene::default()
+    };
+    let world = crate::render::prepared::PreparedScene::new(&scene).world;
+    crate::scene::ObjectPattern(std::sync::Arc::new(world))
 }
 
 /// `texture { uv_mapping ... }`: the texture's pigments (and its texture map's pattern)
