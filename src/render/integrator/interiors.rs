@@ -59,8 +59,8 @@ impl InteriorStack {
         self.solid & ((1u16 << self.len) - 1) as u8 == 0
     }
 
-    /// Without the interior `id` (the innermost one when the ray did not know it was in it,
-    /// as a camera inside an object).
+    /// Without the interior `id`. Rays leave only interiors they are in; for an `id` not in
+    /// the stack the innermost is dropped, a safeguard no caller relies on.
     pub(super) fn left(&self, id: u32) -> InteriorStack {
         let mut m = *self;
         match m.ids[..m.len].iter().rposition(|&i| i == id) {

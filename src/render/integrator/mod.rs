@@ -698,13 +698,9 @@ fn crossing_at(s: &Shading, wavelength: Option<f64>) -> (f64, f64, InteriorStack
     let ior = dispersion::interior_ior(s.material, wavelength);
     let inside = &s.path.interiors;
     if s.leaving {
+        // Leaving means the ray is in this interior (see `shading`).
         let beyond = inside.left(id);
-        let from = if inside.contains(id) {
-            ior
-        } else {
-            inside.current()
-        };
-        (from, beyond.current(), beyond)
+        (ior, beyond.current(), beyond)
     } else {
         (
             inside.current(),
