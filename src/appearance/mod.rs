@@ -12,6 +12,7 @@ pub mod pattern;
 pub mod pigment;
 pub mod sky;
 pub mod texture;
+pub mod tiling;
 pub mod warps;
 
 pub use pigment::evaluate_pigment;

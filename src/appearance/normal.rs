@@ -111,10 +111,11 @@ fn bump_map_normal(normal: &Normal, b: &crate::scene::BumpMap, q: DVec3, n: DVec
     if w == 0 || h == 0 || !q.is_finite() {
         return n;
     }
-    if b.once && !((0.0..1.0).contains(&q.x) && (0.0..1.0).contains(&q.y)) {
+    let (u, v) = super::pigment::image_uv(b.map_type, q);
+    if b.once && !((0.0..1.0).contains(&u) && (0.0..1.0).contains(&v)) {
         return n;
     }
-    let (u, v) = (q.x.rem_euclid(1.0), q.y.rem_euclid(1.0));
+    let (u, v) = (u.rem_euclid(1.0), v.rem_euclid(1.0));
     let height = |x: f64, y: f64| -> f64 {
         let at = |i: i64, j: i64| {
             f64::from(im.heights[(j.rem_euclid(h) * w + i.rem_euclid(w)) as usize])
@@ -407,6 +408,7 @@ mod bump_map_tests {
         };
         let kind = PatternKind::BumpMap(BumpMap {
             image: std::sync::Arc::new(image),
+            map_type: crate::scene::MapType::Planar,
             once: false,
             bilinear: false,
         });
@@ -461,6 +463,7 @@ mod bump_map_tests {
         };
         let kind = PatternKind::BumpMap(BumpMap {
             image: std::sync::Arc::new(image),
+            map_type: crate::scene::MapType::Planar,
             once: false,
             bilinear: false,
         });

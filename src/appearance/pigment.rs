@@ -192,7 +192,7 @@ pub(super) fn nearest_pixel((u, v): (f64, f64), (w, h): (usize, usize)) -> (usiz
 }
 
 /// An image's (u, v) at a pattern-space point, for its map type.
-fn image_uv(map_type: MapType, p: DVec3) -> (f64, f64) {
+pub(crate) fn image_uv(map_type: MapType, p: DVec3) -> (f64, f64) {
     match map_type {
         MapType::Planar => (p.x, p.y),
         MapType::Spherical => {

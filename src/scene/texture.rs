@@ -240,6 +240,9 @@ pub enum PatternKind {
         image: std::sync::Arc<ImageMap>,
         use_alpha: bool,
     },
+    /// `tiling n`: one of POV-Ray's bevelled tilings of the x-z plane
+    /// (src/appearance/tiling.rs).
+    Tiling(u8),
     /// `object { Obj A, B }`: entry 1 inside the object's solid, 0 outside (a list
     /// pattern of two).
     Object(ObjectPattern),
@@ -519,6 +522,7 @@ pub struct HeightImage {
 #[derive(Clone, Debug, PartialEq)]
 pub struct BumpMap {
     pub image: std::sync::Arc<HeightImage>,
+    pub map_type: MapType,
     pub once: bool,
     /// Heights bilinear between pixel centres (`interpolate 2` or 4) instead of the
     /// nearest pixel's.

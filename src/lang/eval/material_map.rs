@@ -109,9 +109,9 @@ impl Evaluator<'_> {
 }
 
 impl Evaluator<'_> {
-    /// After `bump_map` in a normal: `{ [png] "file" [once] [map_type 0] [interpolate n]
-    /// [use_color | use_index] [bump_size s] }`, the x-y plane's heights (bump_size 1
-    /// unless given). Other map types are refused: not yet measured.
+    /// After `bump_map` in a normal: `{ [png] "file" [once] [map_type n] [interpolate n]
+    /// [use_color | use_index] [bump_size s] }`: the image's heights, mapped as an
+    /// image_map's colours are (bump_size 1 unless given).
     pub(super) fn bump_map_body(&mut self) -> R<Normal> {
         let open = self.expect(Punct::LBrace, "after `bump_map`")?;
         self.enter(open.span)?;
@@ -125,6 +125,7 @@ impl Evaluator<'_> {
     fn bump_map_items(&mut self) -> R<Normal> {
         let (path, span) = self.png_file("bump_map")?;
         let (mut once, mut use_index, mut bilinear, mut size) = (false, false, false, 1.0);
+        let mut map_type = MapType::Planar;
         loop {
             let tok = self.peek()?;
             if tok.is_punct(Punct::RBrace) {
@@ -146,9 +147,7 @@ impl Evaluator<'_> {
                 }
                 Some("map_type") => {
                     self.next()?;
-                    if self.float()? != 0.0 {
-                        return Err(self.unsupported(&tok, "map_type in a bump_map"));
-                    }
+                    map_type = self.map_type_number(&tok)?;
                 }
                 _ => return Err(self.stray_in_block(&tok, "the bump_map")),
             }
@@ -156,6 +155,7 @@ impl Evaluator<'_> {
         let image = load_heights(&path, use_index).map_err(|e| self.err(span, e))?;
         let kind = PatternKind::BumpMap(BumpMap {
             image: Arc::new(image),
+            map_type,
             once,
             bilinear,
         });

@@ -19,7 +19,7 @@ use crate::scene::{
 type R<T> = Result<T, Diagnostic>;
 
 /// Pattern keywords POV-Ray has that penumbra does not model yet.
-const UNSUPPORTED_PATTERNS: &[&str] = &["aoi", "facets", "pavement", "tiling"];
+const UNSUPPORTED_PATTERNS: &[&str] = &["aoi", "facets", "pavement"];
 
 /// Pattern keywords penumbra models.
 const PATTERNS: &[&str] = &[
@@ -44,6 +44,7 @@ const PATTERNS: &[&str] = &[
     "radial",
     "spiral1",
     "spiral2",
+    "tiling",
     "leopard",
     "marble",
     "wood",
@@ -478,6 +479,7 @@ impl Evaluator<'_> {
             "onion" => PatternKind::Onion,
             "radial" => PatternKind::Radial,
             "spiral1" => PatternKind::Spiral1(self.float()?),
+            "tiling" => PatternKind::Tiling(self.tiling_number()?),
             "spiral2" => PatternKind::Spiral2(self.float()?),
             "leopard" => PatternKind::Leopard,
             "marble" => PatternKind::Marble,
@@ -520,6 +522,21 @@ impl Evaluator<'_> {
                 PatternKind::PigmentPattern(Box::new(pig))
             }
         })
+    }
+
+    /// `tiling n`'s number, refused by name where the tiling is not modelled.
+    fn tiling_number(&mut self) -> R<u8> {
+        let tok = self.peek()?;
+        let (v, span) = self.expr()?;
+        let n = self.to_float(&v, span)?.trunc();
+        if !(1.0..=27.0).contains(&n) {
+            return Err(self.err(span, format!("tiling takes a number from 1 to 27, not {n}")));
+        }
+        let n = n as u8;
+        if !crate::appearance::tiling::supported(n) {
+            return Err(self.unsupported(&tok, &format!("tiling {n}")));
+        }
+        Ok(n)
     }
 
     /// `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }` (the braces may be left out,

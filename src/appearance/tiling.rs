@@ -1,0 +1,179 @@
+//! `tiling N`: POV-Ray's periodic tilings of the x-z plane, each tile bevelled.
+//!
+//! Every tiling is one table: two lattice vectors and the polygons of one cell, each with
+//! its tile type. The value inside a tile of type t (of n types) is
+//! `(t + max(0, 1 - d / bevel)) / n`, d being the distance to the tile's boundary: the
+//! tile's body takes t/n and its edge (t+1)/n, which is how POV-Ray's documentation tells
+//! users to caulk tiles. Tables and the bevel rule were measured from POV-Ray's renders of
+//! each tiling seen from above (the bevel is the smallest tile's inradius, so the smallest
+//! tile rises to its edge from a single centre point); no code of POV-Ray's was read.
+
+use glam::{DVec2, DVec3};
+
+const SQRT_3: f64 = 1.732_050_807_568_877_2;
+const SQRT_2: f64 = std::f64::consts::SQRT_2;
+
+/// One polygon of a tiling's cell (vertices in order, x then z).
+struct Tile {
+    kind: u8,
+    vertices: &'static [[f64; 2]],
+}
+
+/// A tiling: the cell's lattice vectors, its tiles, the number of tile types and the
+/// bevel width.
+struct Tiling {
+    a: [f64; 2],
+    b: [f64; 2],
+    tiles: &'static [Tile],
+    types: u8,
+    bevel: f64,
+}
+
+/// The tilings penumbra has measured, by POV-Ray's number.
+fn table(n: u8) -> Option<&'static Tiling> {
+    TILINGS.iter().find(|(k, _)| *k == n).map(|(_, t)| t)
+}
+
+/// Whether `tiling n` is modelled (the language refuses the others by name).
+pub fn supported(n: u8) -> bool {
+    table(n).is_some()
+}
+
+/// The pattern value of `tiling n` at a point (its y is ignored).
+pub fn tiling_value(n: u8, p: DVec3) -> f64 {
+    let Some(t) = table(n) else { return 0.0 };
+    locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |(kind, d)| {
+        let rise = (1.0 - d / t.bevel).max(0.0);
+        (f64::from(kind) + rise) / f64::from(t.types)
+    })
+}
+
+/// The type of the tile holding `q` and the distance from `q` to that tile's boundary.
+fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
+    let (a, b) = (DVec2::from(t.a), DVec2::from(t.b));
+    let det = a.perp_dot(b);
+    let u = (q.perp_dot(b) / det).floor();
+    let v = (a.perp_dot(q) / det).floor();
+    // The cell's polygons may reach past the parallelogram spanned by a and b, so the
+    // point is looked for in the neighbouring cells' copies too.
+    for di in -2..=2 {
+        for dj in -2..=2 {
+            let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
+            for tile in t.tiles {
+                if let Some(d) = depth_in(tile.vertices, local) {
+                    return Some((tile.kind, d));
+                }
+            }
+        }
+    }
+    None
+}
+
+/// The distance from `q` to the polygon's boundary when `q` lies inside it.
+fn depth_in(vertices: &[[f64; 2]], q: DVec2) -> Option<f64> {
+    let mut inside = false;
+    let mut nearest = f64::INFINITY;
+    let n = vertices.len();
+    for i in 0..n {
+        let s = DVec2::from(vertices[i]);
+        let e = DVec2::from(vertices[(i + 1) % n]);
+        if (s.y > q.y) != (e.y > q.y) && q.x < s.x + (q.y - s.y) * (e.x - s.x) / (e.y - s.y) {
+            inside = !inside;
+        }
+        let edge = e - s;
+        let t = ((q - s).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
+        nearest = nearest.min((s + edge * t).distance(q));
+    }
+    inside.then_some(nearest)
+}
+
+const TILINGS: &[(u8, Tiling)] = &[
+    (
+        1,
+        Tiling {
+            a: [1.0, 0.0],
+            b: [0.0, 1.0],
+            tiles: &[Tile {
+                kind: 0,
+                vertices: &[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+            }],
+            types: 1,
+            bevel: 0.5,
+        },
+    ),
+    (7, OCTAGON_SQUARE),
+];
+
+/// Octagons of side 1 round the origin, squares of side 1 turned 45 degrees between them.
+const OCTAGON_SQUARE: Tiling = {
+    const P: f64 = 1.0 + SQRT_2;
+    const H: f64 = P / 2.0;
+    const R: f64 = SQRT_2 / 2.0;
+    Tiling {
+        a: [P, 0.0],
+        b: [0.0, P],
+        tiles: &[
+            Tile {
+                kind: 1,
+                vertices: &[
+                    [H, 0.5],
+                    [0.5, H],
+                    [-0.5, H],
+                    [-H, 0.5],
+                    [-H, -0.5],
+                    [-0.5, -H],
+                    [0.5, -H],
+                    [H, -0.5],
+                ],
+            },
+            Tile {
+                kind: 0,
+                vertices: &[[H, H - R], [H + R, H], [H, H + R], [H - R, H]],
+            },
+        ],
+        types: 2,
+        bevel: 0.5,
+    }
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(n: u8, x: f64, z: f64) -> f64 {
+        tiling_value(n, DVec3::new(x, 7.0, z))
+    }
+
+    #[test]
+    fn every_point_lies_in_a_tile_of_every_tiling() {
+        for (n, t) in TILINGS {
+            for i in 0..2000 {
+                let x = f64::from(i % 40) * 0.731 - 17.0;
+                let z = f64::from(i / 40) * 0.593 - 15.0;
+                let found = locate(t, DVec2::new(x, z));
+                assert!(found.is_some(), "tiling {n} has a gap at ({x}, {z})");
+                let (kind, d) = found.unwrap();
+                assert!(kind < t.types && d >= 0.0, "tiling {n} at ({x}, {z})");
+            }
+        }
+    }
+
+    #[test]
+    fn square_tiles_rise_from_their_centres_to_their_edges() {
+        assert!((at(1, 0.5, 0.5) - 0.0).abs() < 1e-12);
+        assert!((at(1, 0.75, 0.5) - 0.5).abs() < 1e-12);
+        assert!((at(1, 0.99, 0.4) - 0.98).abs() < 1e-9);
+    }
+
+    #[test]
+    fn octagons_keep_a_flat_body_inside_the_bevel() {
+        // The bevel is the small square's inradius (0.5): the octagon (type 1 of 2) is flat
+        // at 0.5 more than 0.5 from its edge, which lies 1.207 from its centre.
+        assert!((at(7, 0.0, 0.0) - 0.5).abs() < 1e-12);
+        assert!((at(7, 0.6, 0.0) - 0.5).abs() < 1e-12);
+        let edge = (1.0 + SQRT_2) / 2.0;
+        assert!((at(7, edge - 0.25, 0.0) - 0.75).abs() < 1e-9);
+        // The square's centre reads 0, its type's lowest value.
+        assert!(at(7, edge, edge).abs() < 1e-9);
+    }
+}
