@@ -3,7 +3,8 @@
 // index; an 8-bit RGB image of this project's (scenes/images) picks by its red byte
 // (numbers 0-5 over 3 textures: the count itself picks the last, larger ones wrap), once
 // over part of a box face (the first texture beyond it), and map_type 1 wraps the palette
-// image round a sphere; an 8-bit grey image (the hills) numbers a tile on the floor
+// image round a sphere; an 8-bit grey image (the hills) numbers a tile on the floor and a
+// 16-bit grey one (the ridges) another
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
@@ -38,4 +39,9 @@ box { <-0.4, 0, -1.2>, <1.1, 1.3, -0.8>
 box { <1.4, 0, -2>, <2.8, 0.05, -0.7>
   texture { material_map { png "images/hf_hills8.png" texture { Red } texture { Blue } texture { Stripes } }
     rotate x*90 scale 1.4 translate <1.4, 0, -2> }
+}
+// A 16-bit grey image's numbers: each value over 257, whole, then picked modulo the textures
+box { <-2.8, 0, -2>, <-1.4, 0.05, -0.7>
+  texture { material_map { png "images/hf_ridges16.png" texture { Red } texture { Blue } texture { Stripes } texture { Mirror } }
+    rotate x*90 scale 1.4 translate <-2.8, 0, -2> }
 }

@@ -239,10 +239,14 @@ enum NumberKind {
     /// textures over the greys 0 to 11 and 0 to 220 by 20: 0 1 2 2 1 1 2 1 2 0 0 2 and 0 1 0
     /// 0 1 0 0 1 0 2 1 0, which the grey itself, 0 1 2 2 1 2 0 1 2 ..., misses).
     Grey,
+    /// A 16-bit image's first sample (grey, or red) divided by 257, whole: measured with 16
+    /// textures on the values 257 k - 1, 257 k and 257 k + 1 for k up to 15 (513 picks 1,
+    /// 514 picks 2; the green and blue samples have no effect).
+    Wide,
 }
 
-/// A PNG's pixels as numbers: palette indices as stored, the red byte of 8-bit colour, or
-/// an 8-bit grey's cut brightness.
+/// A PNG's pixels as numbers: palette indices as stored, the red byte of 8-bit colour, an
+/// 8-bit grey's cut brightness, or a 16-bit image's first sample over 257.
 pub(super) fn load_indices(path: &std::path::Path) -> Result<IndexImage, String> {
     let cannot = |e: String| format!("cannot read \"{}\": {e}", path.display());
     let file = std::fs::File::open(path).map_err(|e| cannot(e.to_string()))?;
@@ -264,10 +268,11 @@ pub(super) fn load_indices(path: &std::path::Path) -> Result<IndexImage, String>
         (png::ColorType::Indexed, _) => NumberKind::Palette,
         (png::ColorType::Rgb | png::ColorType::Rgba, 8) => NumberKind::Red,
         (png::ColorType::Grayscale | png::ColorType::GrayscaleAlpha, 8) => NumberKind::Grey,
+        (_, 16) => NumberKind::Wide,
         _ => {
             return Err(cannot(
-                "numbers (material_map, use_index) are read from palette, 8-bit grey or 8-bit \
-                 colour PNGs only"
+                "numbers (material_map, use_index) are read from palette, grey or colour PNGs \
+                 of 8 or 16 bits only"
                     .into(),
             ));
         }
@@ -275,6 +280,10 @@ pub(super) fn load_indices(path: &std::path::Path) -> Result<IndexImage, String>
     let index_at = |row: &[u8], x: usize| -> u8 {
         match kind {
             NumberKind::Red => row[x * channels],
+            NumberKind::Wide => {
+                let at = 2 * x * channels;
+                (u16::from_be_bytes([row[at], row[at + 1]]) / 257) as u8
+            }
             NumberKind::Grey => {
                 let g = f32::from(row[x * channels]) / 255.0;
                 (quantised_brightness([g; 3], 255.0) * 255.0) as u8
@@ -335,6 +344,35 @@ mod tests {
             })
             .collect();
         assert_eq!(picked, [0, 1, 2, 2, 1, 1, 2, 1, 2, 0, 0, 2]);
+    }
+
+    /// POV-Ray 3.7's textures (of 16) for the 16-bit greys 257 k - 1, 257 k, 257 k + 1,
+    /// k = 0 to 15, and the same values in a colour image's red sample.
+    #[test]
+    fn sixteen_bit_numbers_pick_textures_as_povray_does() {
+        let values: Vec<u16> = (0..16u16)
+            .flat_map(|k| [(257 * k).saturating_sub(1), 257 * k, 257 * k + 1])
+            .collect();
+        let measured: Vec<u8> = vec![
+            0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4, 5, 5, 5, 6, 6, 6, 7, 7, 7, 8, 8, 8, 9, 9,
+            9, 10, 10, 10, 11, 11, 11, 12, 12, 12, 13, 13, 13, 14, 14, 14, 15, 15,
+        ];
+        let dir = crate::study::TempDir::new("wide-material").unwrap();
+        let grey = dir.path().join("g.png");
+        image::ImageBuffer::<image::Luma<u16>, _>::from_fn(48, 1, |x, _| {
+            image::Luma([values[x as usize]])
+        })
+        .save(&grey)
+        .unwrap();
+        let red = dir.path().join("r.png");
+        image::ImageBuffer::<image::Rgb<u16>, _>::from_fn(48, 1, |x, _| {
+            image::Rgb([values[x as usize], 9999, 40000])
+        })
+        .save(&red)
+        .unwrap();
+        for path in [grey, red] {
+            assert_eq!(super::load_indices(&path).unwrap().index, measured);
+        }
     }
 
     #[test]
