@@ -10,13 +10,16 @@
 
 use glam::{DVec2, DVec3};
 
-const SQRT_3: f64 = 1.732_050_807_568_877_2;
-const SQRT_2: f64 = std::f64::consts::SQRT_2;
+mod table;
+use table::TILINGS;
 
-/// One polygon of a tiling's cell (vertices in order, x then z).
+/// One polygon of a tiling's cell (vertices in order, x then z). `edge_bevels`, when not
+/// empty, gives each edge (vertex k to k + 1) its own bevel width: tiling 22's dodecagons
+/// bevel three of their edges wider than the others (measured).
 struct Tile {
     kind: u8,
     vertices: &'static [[f64; 2]],
+    edge_bevels: &'static [f64],
 }
 
 /// A tiling: the cell's lattice vectors, its tiles, the number of tile types and the
@@ -42,13 +45,21 @@ pub fn supported(n: u8) -> bool {
 /// The pattern value of `tiling n` at a point (its y is ignored).
 pub fn tiling_value(n: u8, p: DVec3) -> f64 {
     let Some(t) = table(n) else { return 0.0 };
-    locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |(kind, d)| {
-        let rise = (1.0 - d / t.bevel).max(0.0);
+    locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |(kind, depth)| {
+        let rise = (1.0 - depth).max(BODY);
         (f64::from(kind) + rise) / f64::from(t.types)
     })
 }
 
-/// The type of the tile holding `q` and the distance from `q` to that tile's boundary.
+/// How far above t/n a tile's flat body reads. POV-Ray's bodies read a hair above it
+/// (measured through `frequency` and `phase` into a colour map ramp 1e-11 wide: tiling 7's
+/// octagons 1e-12 above 1/2, tiling 9's hexagons 1.4e-8 above 2/3), so a colour map entry
+/// placed exactly at t/n, as POV-Ray's documentation and textures/patterns/tiling.pov place
+/// them, colours the body with the type's own entry rather than the caulk below it.
+const BODY: f64 = 1e-10;
+
+/// The type of the tile holding `q` and how deep `q` lies in it: its distance to the
+/// tile's boundary in bevel widths.
 fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
     let (a, b) = (DVec2::from(t.a), DVec2::from(t.b));
     let det = a.perp_dot(b);
@@ -60,7 +71,7 @@ fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
         for dj in -2..=2 {
             let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
             for tile in t.tiles {
-                if let Some(d) = depth_in(tile.vertices, local) {
+                if let Some(d) = depth_in(tile, t.bevel, local) {
                     return Some((tile.kind, d));
                 }
             }
@@ -69,8 +80,10 @@ fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
     None
 }
 
-/// The distance from `q` to the polygon's boundary when `q` lies inside it.
-fn depth_in(vertices: &[[f64; 2]], q: DVec2) -> Option<f64> {
+/// When `q` lies inside the tile, its distance to the tile's boundary in bevel widths (each
+/// edge's own width where the tile has them).
+fn depth_in(tile: &Tile, bevel: f64, q: DVec2) -> Option<f64> {
+    let vertices = tile.vertices;
     let mut inside = false;
     let mut nearest = f64::INFINITY;
     let n = vertices.len();
@@ -82,59 +95,11 @@ fn depth_in(vertices: &[[f64; 2]], q: DVec2) -> Option<f64> {
         }
         let edge = e - s;
         let t = ((q - s).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
-        nearest = nearest.min((s + edge * t).distance(q));
+        let width = tile.edge_bevels.get(i).copied().unwrap_or(bevel);
+        nearest = nearest.min((s + edge * t).distance(q) / width);
     }
     inside.then_some(nearest)
 }
-
-const TILINGS: &[(u8, Tiling)] = &[
-    (
-        1,
-        Tiling {
-            a: [1.0, 0.0],
-            b: [0.0, 1.0],
-            tiles: &[Tile {
-                kind: 0,
-                vertices: &[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
-            }],
-            types: 1,
-            bevel: 0.5,
-        },
-    ),
-    (7, OCTAGON_SQUARE),
-];
-
-/// Octagons of side 1 round the origin, squares of side 1 turned 45 degrees between them.
-const OCTAGON_SQUARE: Tiling = {
-    const P: f64 = 1.0 + SQRT_2;
-    const H: f64 = P / 2.0;
-    const R: f64 = SQRT_2 / 2.0;
-    Tiling {
-        a: [P, 0.0],
-        b: [0.0, P],
-        tiles: &[
-            Tile {
-                kind: 1,
-                vertices: &[
-                    [H, 0.5],
-                    [0.5, H],
-                    [-0.5, H],
-                    [-H, 0.5],
-                    [-H, -0.5],
-                    [-0.5, -H],
-                    [0.5, -H],
-                    [H, -0.5],
-                ],
-            },
-            Tile {
-                kind: 0,
-                vertices: &[[H, H - R], [H + R, H], [H, H + R], [H - R, H]],
-            },
-        ],
-        types: 2,
-        bevel: 0.5,
-    }
-};
 
 #[cfg(test)]
 mod tests {
@@ -171,7 +136,7 @@ mod tests {
         // at 0.5 more than 0.5 from its edge, which lies 1.207 from its centre.
         assert!((at(7, 0.0, 0.0) - 0.5).abs() < 1e-12);
         assert!((at(7, 0.6, 0.0) - 0.5).abs() < 1e-12);
-        let edge = (1.0 + SQRT_2) / 2.0;
+        let edge = (1.0 + std::f64::consts::SQRT_2) / 2.0;
         assert!((at(7, edge - 0.25, 0.0) - 0.75).abs() < 1e-9);
         // The square's centre reads 0, its type's lowest value.
         assert!(at(7, edge, edge).abs() < 1e-9);
