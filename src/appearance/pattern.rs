@@ -210,6 +210,7 @@ fn raw_value(pattern: &Pattern, p: DVec3) -> f64 {
         PatternKind::Function(f) => gradient_value(f.at(p)),
         PatternKind::Onion => p.length(),
         PatternKind::Tiling(n) => super::tiling::tiling_value(*n, p),
+        PatternKind::Pavement(v) => super::tiling::pavement_value(v, p),
         PatternKind::Radial => 0.25 + (p.x.atan2(p.z) + PI) / TAU,
         PatternKind::Leopard => {
             let s = (p.x.sin() + p.y.sin() + p.z.sin()) / 3.0;

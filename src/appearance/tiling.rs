@@ -1,4 +1,5 @@
-//! `tiling N`: POV-Ray's periodic tilings of the x-z plane, each tile bevelled.
+//! `tiling N` and `pavement`: POV-Ray's periodic tilings of the x-z plane, each tile
+//! bevelled. Pavements are tilings of one type whose tile is a polyform.
 //!
 //! Every tiling is one table: two lattice vectors and the polygons of one cell, each with
 //! its tile type. The value inside a tile of type t (of n types) is
@@ -10,7 +11,9 @@
 
 use glam::{DVec2, DVec3};
 
+mod pavements;
 mod table;
+use pavements::PAVEMENTS;
 use table::TILINGS;
 
 /// One polygon of a tiling's cell (vertices in order, x then z). `edge_bevels`, when not
@@ -42,9 +45,47 @@ pub fn supported(n: u8) -> bool {
     table(n).is_some()
 }
 
+/// The pavement measured for a choice of polyform, if penumbra has it.
+fn pavement(v: &crate::scene::Pavement) -> Option<&'static Tiling> {
+    PAVEMENTS
+        .iter()
+        .find(|(k, _)| *k == (v.sides, v.tiles, v.pattern))
+        .map(|(_, t)| t)
+}
+
+/// How many arrangements POV-Ray has of `tiles` basic polygons of `sides` sides (POV-Ray's
+/// documentation: the polyforms that pave the plane; none of 6 hexagons).
+pub fn pavement_count(sides: u8, tiles: u8) -> u8 {
+    let counts: &[u8] = match sides {
+        3 => &[1, 1, 1, 3, 4, 12],
+        4 => &[1, 1, 2, 5, 12, 35],
+        6 => &[1, 1, 3, 7, 22],
+        _ => &[],
+    };
+    counts
+        .get(usize::from(tiles).wrapping_sub(1))
+        .copied()
+        .unwrap_or(0)
+}
+
+/// Whether a pavement is modelled: its polyform's table is measured, with the corners
+/// POV-Ray draws by default (the other corner styles are not measured yet).
+pub fn pavement_supported(v: &crate::scene::Pavement) -> bool {
+    pavement(v).is_some() && (v.form, v.interior, v.exterior) == (0, 0, 0)
+}
+
+/// The pattern value of a pavement at a point (its y is ignored).
+pub fn pavement_value(v: &crate::scene::Pavement, p: DVec3) -> f64 {
+    pavement(v).map_or(0.0, |t| bevelled(t, p))
+}
+
 /// The pattern value of `tiling n` at a point (its y is ignored).
 pub fn tiling_value(n: u8, p: DVec3) -> f64 {
-    let Some(t) = table(n) else { return 0.0 };
+    table(n).map_or(0.0, |t| bevelled(t, p))
+}
+
+/// A tiling's value: the tile's type, raised by the bevel near its edge.
+fn bevelled(t: &Tiling, p: DVec3) -> f64 {
     locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |(kind, depth)| {
         let rise = (1.0 - depth).max(BODY);
         (f64::from(kind) + rise) / f64::from(t.types)
@@ -111,7 +152,11 @@ mod tests {
 
     #[test]
     fn every_point_lies_in_a_tile_of_every_tiling() {
-        for (n, t) in TILINGS {
+        let all = TILINGS.iter().map(|(n, t)| (format!("tiling {n}"), t));
+        let pavements = PAVEMENTS
+            .iter()
+            .map(|(k, t)| (format!("pavement {k:?}"), t));
+        for (n, t) in all.chain(pavements) {
             for i in 0..2000 {
                 let x = f64::from(i % 40) * 0.731 - 17.0;
                 let z = f64::from(i / 40) * 0.593 - 15.0;

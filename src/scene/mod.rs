@@ -38,8 +38,8 @@ pub use spline::{
 pub use texture::{
     BlackHole, BumpMap, Crackle, Finish, Fractal, FractalColouring, FractalFormula, HeightImage,
     ImageData, ImageMap, IndexImage, Interior, Interpolate, Irid, MapType, MappingKind,
-    MappingWarp, MaterialImage, Normal, ObjectPattern, Orientation, Pattern, PatternKind, Pigment,
-    PigmentKind, Quilted, Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap,
+    MappingWarp, MaterialImage, Normal, ObjectPattern, Orientation, Pattern, PatternKind, Pavement,
+    Pigment, PigmentKind, Quilted, Reflection, RepeatWarp, Slope, SlopeEntry, Texture, TextureMap,
     Turbulence, VoxelGrid, Warp, Wave,
 };
 

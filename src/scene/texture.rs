@@ -243,9 +243,40 @@ pub enum PatternKind {
     /// `tiling n`: one of POV-Ray's bevelled tilings of the x-z plane
     /// (src/appearance/tiling.rs).
     Tiling(u8),
+    /// `pavement`: the x-z plane paved with one polyform tile, bevelled
+    /// (src/appearance/tiling.rs).
+    Pavement(Pavement),
     /// `object { Obj A, B }`: entry 1 inside the object's solid, 0 outside (a list
     /// pattern of two).
     Object(ObjectPattern),
+}
+
+/// `pavement`'s choice of tile: the basic polygon's sides (3, 4 or 6), how many make the
+/// tile, which of their arrangements (from 1), and the corner styles (0, 1 or 2; form 3
+/// for squares).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pavement {
+    pub sides: u8,
+    pub tiles: u8,
+    pub pattern: u8,
+    pub form: u8,
+    pub interior: u8,
+    pub exterior: u8,
+}
+
+impl Default for Pavement {
+    /// POV-Ray's defaults (measured: a bare `pavement` renders as `number_of_sides 3
+    /// number_of_tiles 1 pattern 1`).
+    fn default() -> Pavement {
+        Pavement {
+            sides: 3,
+            tiles: 1,
+            pattern: 1,
+            form: 0,
+            interior: 0,
+            exterior: 0,
+        }
+    }
 }
 
 /// The object an `object` pattern tests points against, built for that test (its BVH and
@@ -586,6 +617,16 @@ impl Default for Pigment {
 }
 
 impl Pigment {
+    /// The pattern a patterned pigment reads (none for a colour or an image).
+    pub fn pattern(&self) -> Option<&Pattern> {
+        match &self.kind {
+            PigmentKind::List { pattern, .. }
+            | PigmentKind::ColourMap { pattern, .. }
+            | PigmentKind::PigmentMap { pattern, .. } => Some(pattern),
+            PigmentKind::Solid(_) | PigmentKind::Image(_) => None,
+        }
+    }
+
     pub fn solid(c: Colour) -> Pigment {
         Pigment {
             kind: PigmentKind::Solid(c),

@@ -277,6 +277,8 @@ pub const KEYWORDS: &[&str] = &[
     "normal_map",
     "normal_vectors",
     "now",
+    "number_of_sides",
+    "number_of_tiles",
     "number_of_waves",
     "object",
     "octaves",

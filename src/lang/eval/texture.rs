@@ -19,7 +19,7 @@ use crate::scene::{
 type R<T> = Result<T, Diagnostic>;
 
 /// Pattern keywords POV-Ray has that penumbra does not model yet.
-const UNSUPPORTED_PATTERNS: &[&str] = &["aoi", "facets", "pavement"];
+const UNSUPPORTED_PATTERNS: &[&str] = &["aoi", "facets"];
 
 /// Pattern keywords penumbra models.
 const PATTERNS: &[&str] = &[
@@ -45,6 +45,7 @@ const PATTERNS: &[&str] = &[
     "spiral1",
     "spiral2",
     "tiling",
+    "pavement",
     "leopard",
     "marble",
     "wood",
@@ -171,9 +172,34 @@ const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
         Ok(())
     }),
     ("form", |ev, p| {
+        if let PatternKind::Pavement(v) = &mut p.kind {
+            v.form = ev.pavement_setting("form", &[0, 1, 2, 3])?;
+            return Ok(());
+        }
         let v = ev.vector3()?;
         if let Some(c) = crackle(p) {
             c.form = v;
+        }
+        Ok(())
+    }),
+    ("number_of_sides", |ev, p| {
+        let n = ev.pavement_setting("number_of_sides", &[3, 4, 6])?;
+        if let PatternKind::Pavement(v) = &mut p.kind {
+            v.sides = n;
+        }
+        Ok(())
+    }),
+    ("number_of_tiles", |ev, p| {
+        let n = ev.pavement_setting("number_of_tiles", &[1, 2, 3, 4, 5, 6])?;
+        if let PatternKind::Pavement(v) = &mut p.kind {
+            v.tiles = n;
+        }
+        Ok(())
+    }),
+    ("pattern", |ev, p| {
+        let n = ev.pavement_setting("pattern", &PAVEMENT_PATTERNS)?;
+        if let PatternKind::Pavement(v) = &mut p.kind {
+            v.pattern = n;
         }
         Ok(())
     }),
@@ -213,11 +239,19 @@ const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
     }),
     ("exponent", |ev, p| ev.fractal_exponent(p)),
     ("exterior", |ev, p| {
+        if let PatternKind::Pavement(v) = &mut p.kind {
+            v.exterior = ev.pavement_setting("exterior", &[0, 1, 2])?;
+            return Ok(());
+        }
         let (c, span) = ev.fractal_colouring("exterior")?;
         ev.fractal_of(p, "exterior", span)?.exterior = c;
         Ok(())
     }),
     ("interior", |ev, p| {
+        if let PatternKind::Pavement(v) = &mut p.kind {
+            v.interior = ev.pavement_setting("interior", &[0, 1, 2])?;
+            return Ok(());
+        }
         let (c, span) = ev.fractal_colouring("interior")?;
         ev.fractal_of(p, "interior", span)?.interior = c;
         Ok(())
@@ -230,6 +264,17 @@ const PATTERN_ITEMS: &[(&str, PatternItem)] = &[
         Ok(())
     }),
 ];
+
+/// Pavement's pattern numbers: up to the 35 hexominoes.
+const PAVEMENT_PATTERNS: [u8; 35] = {
+    let mut all = [0; 35];
+    let mut i = 0;
+    while i < 35 {
+        all[i] = i as u8 + 1;
+        i += 1;
+    }
+    all
+};
 
 /// The crackle settings a modifier changes; other patterns ignore crackle's modifiers.
 fn crackle(p: &mut Pattern) -> Option<&mut Crackle> {
@@ -337,6 +382,7 @@ impl Evaluator<'_> {
         self.leave();
         let p = r?;
         let close = self.expect(Punct::RBrace, "to close the pigment")?;
+        self.check_pavement(p.pattern(), close.span)?;
         if let PigmentKind::ColourMap { pattern, .. } = &p.kind
             && matches!(pattern.kind, PatternKind::Average)
         {
@@ -480,6 +526,7 @@ impl Evaluator<'_> {
             "radial" => PatternKind::Radial,
             "spiral1" => PatternKind::Spiral1(self.float()?),
             "tiling" => PatternKind::Tiling(self.tiling_number()?),
+            "pavement" => PatternKind::Pavement(crate::scene::Pavement::default()),
             "spiral2" => PatternKind::Spiral2(self.float()?),
             "leopard" => PatternKind::Leopard,
             "marble" => PatternKind::Marble,
@@ -537,6 +584,52 @@ impl Evaluator<'_> {
             return Err(self.unsupported(&tok, &format!("tiling {n}")));
         }
         Ok(n)
+    }
+
+    /// One of pavement's whole-number settings, which must be one of `allowed`.
+    fn pavement_setting(&mut self, name: &str, allowed: &[u8]) -> R<u8> {
+        let (v, span) = self.expr()?;
+        let n = self.to_float(&v, span)?.trunc();
+        if let Some(&a) = allowed.iter().find(|&&a| f64::from(a) == n) {
+            return Ok(a);
+        }
+        let choices = match allowed {
+            [first, .., last] if allowed.len() > 6 => format!("from {first} to {last}"),
+            _ => {
+                let all: Vec<String> = allowed.iter().map(u8::to_string).collect();
+                format!("one of {}", all.join(", "))
+            }
+        };
+        Err(self.err(span, format!("pavement's {name} is {choices}, not {n}")))
+    }
+
+    /// A pavement whose block has closed at `span`: its polyform must exist (POV-Ray refuses
+    /// hexagons of 6 and patterns past the count of their polyforms) and be measured.
+    fn check_pavement(&self, pattern: Option<&Pattern>, span: Span) -> R<()> {
+        let Some(PatternKind::Pavement(v)) = pattern.map(|p| &p.kind) else {
+            return Ok(());
+        };
+        let count = crate::appearance::tiling::pavement_count(v.sides, v.tiles);
+        if v.pattern > count {
+            return Err(self.err(
+                span,
+                format!(
+                    "pavement has {count} patterns of {} polygons of {} sides, not {}",
+                    v.tiles, v.sides, v.pattern
+                ),
+            ));
+        }
+        if crate::appearance::tiling::pavement_supported(v) {
+            return Ok(());
+        }
+        Err(self.err(
+            span,
+            format!(
+                "unsupported: pavement number_of_sides {} number_of_tiles {} pattern {} form {} \
+                 interior {} exterior {} is not supported yet",
+                v.sides, v.tiles, v.pattern, v.form, v.interior, v.exterior
+            ),
+        ))
     }
 
     /// `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }` (the braces may be left out,
@@ -1075,7 +1168,8 @@ impl Evaluator<'_> {
         let r = self.normal_items(base, Punct::RBrace);
         self.leave();
         let n = r?;
-        self.expect(Punct::RBrace, "to close the normal")?;
+        let close = self.expect(Punct::RBrace, "to close the normal")?;
+        self.check_pavement(n.as_ref().map(|n| &n.pattern), close.span)?;
         Ok(n)
     }
 
@@ -1516,7 +1610,8 @@ impl Evaluator<'_> {
         let r = self.texture_items(base, Punct::RBrace);
         self.leave();
         let t = r?;
-        self.expect(Punct::RBrace, "to close the texture")?;
+        let close = self.expect(Punct::RBrace, "to close the texture")?;
+        self.check_pavement(t.map.as_ref().map(|m| &m.pattern), close.span)?;
         Ok(t)
     }
 
