@@ -1,11 +1,12 @@
-// tiling 13 to 24: each on a square slab, with a colour map that gives every tile
-// type its own colour and a light caulk at the bevelled edges (POV-Ray's type t owns the
-// values t/N to (t+1)/N); every other slab also takes the pattern as its normal
+// tiling 13 to 24 and 27 (Penrose's rhombs, round the origin at the front left): each on
+// a square slab, with a colour map that gives every tile type its own colour and a light
+// caulk at the bevelled edges (POV-Ray's type t owns the values t/N to (t+1)/N); every
+// other slab also takes the pattern as its normal
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
 camera {
-  location <0, 9, -5.5>
+  location <0, 11, -7>
   look_at <0, 0, -0.3>
   right x*image_width/image_height
   angle 48
@@ -34,15 +35,16 @@ light_source { <-3, 12, -6> color rgb 1 }
     translate <X, 0, Z> }
 #end
 
-Slab(13, 3, -3, 2, false)
-Slab(14, 5, -1, 2, true)
-Slab(15, 2, 1, 2, false)
-Slab(16, 3, 3, 2, true)
-Slab(17, 6, -3, 0, false)
-Slab(18, 2, -1, 0, true)
-Slab(19, 3, 1, 0, false)
-Slab(20, 3, 3, 0, true)
-Slab(21, 6, -3, -2, false)
-Slab(22, 3, -1, -2, true)
-Slab(23, 3, 1, -2, false)
-Slab(24, 5, 3, -2, true)
+Slab(13, 3, -3, 3, false)
+Slab(14, 5, -1, 3, true)
+Slab(15, 2, 1, 3, false)
+Slab(16, 3, 3, 3, true)
+Slab(17, 6, -3, 1, false)
+Slab(18, 2, -1, 1, true)
+Slab(19, 3, 1, 1, false)
+Slab(20, 3, 3, 1, true)
+Slab(21, 6, -3, -1, false)
+Slab(22, 3, -1, -1, true)
+Slab(23, 3, 1, -1, false)
+Slab(24, 5, 3, -1, true)
+Slab(27, 2, -3, -3, false)

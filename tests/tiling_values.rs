@@ -63,8 +63,18 @@ fn worst_differences(patterns: &[String]) -> Option<Vec<(String, f64)>> {
         let scene = probe_scene(pattern);
         let theirs = povray_values(&scene, &dir);
         let ours = penumbra_values(&scene);
-        assert_eq!(theirs.len(), 1600, "{pattern}: POV-Ray printed {}", theirs.len());
-        assert_eq!(ours.len(), 1600, "{pattern}: penumbra printed {}", ours.len());
+        assert_eq!(
+            theirs.len(),
+            1600,
+            "{pattern}: POV-Ray printed {}",
+            theirs.len()
+        );
+        assert_eq!(
+            ours.len(),
+            1600,
+            "{pattern}: penumbra printed {}",
+            ours.len()
+        );
         let d = theirs
             .iter()
             .zip(&ours)
@@ -76,8 +86,11 @@ fn worst_differences(patterns: &[String]) -> Option<Vec<(String, f64)>> {
 }
 
 #[test]
-fn every_periodic_tiling_gives_povrays_values() {
-    let patterns: Vec<String> = (1..=24).map(|n| format!("tiling {n}")).collect();
+fn every_periodic_tiling_and_penroses_rhombs_give_povrays_values() {
+    let patterns: Vec<String> = (1..=24)
+        .chain([27])
+        .map(|n| format!("tiling {n}"))
+        .collect();
     let Some(worst) = worst_differences(&patterns) else {
         return;
     };

@@ -12,6 +12,7 @@
 use glam::{DVec2, DVec3};
 
 mod pavements;
+mod penrose;
 mod table;
 use pavements::PAVEMENTS;
 use table::TILINGS;
@@ -42,8 +43,11 @@ fn table(n: u8) -> Option<&'static Tiling> {
 
 /// Whether `tiling n` is modelled (the language refuses the others by name).
 pub fn supported(n: u8) -> bool {
-    table(n).is_some()
+    table(n).is_some() || n == PENROSE_RHOMBS
 }
+
+/// The one aperiodic tiling modelled (src/appearance/tiling/penrose.rs).
+const PENROSE_RHOMBS: u8 = 27;
 
 /// The pavement measured for a choice of polyform, if penumbra has it.
 fn pavement(v: &crate::scene::Pavement) -> Option<&'static Tiling> {
@@ -81,6 +85,9 @@ pub fn pavement_value(v: &crate::scene::Pavement, p: DVec3) -> f64 {
 
 /// The pattern value of `tiling n` at a point (its y is ignored).
 pub fn tiling_value(n: u8, p: DVec3) -> f64 {
+    if n == PENROSE_RHOMBS {
+        return penrose::rhomb_value(DVec2::new(p.x, p.z));
+    }
     table(n).map_or(0.0, |t| bevelled(t, p))
 }
 
