@@ -28,12 +28,18 @@ struct Tile {
 
 /// A tiling: the cell's lattice vectors, its tiles, the number of tile types and the
 /// bevel width.
+/// `grid` holds the directions of the basic grid's lines for pavements: at a reflex corner
+/// of a polyform, POV-Ray's distance is the largest of the distances to the grid lines
+/// through the corner (squares round a square's reflex corner, hexagons round a triangle's
+/// or a hexagon's), not the distance to the corner itself (measured on all 112 pavements).
+/// Tilings' tiles are convex and leave it empty.
 struct Tiling {
     a: [f64; 2],
     b: [f64; 2],
     tiles: &'static [Tile],
     types: u8,
     bevel: f64,
+    grid: &'static [[f64; 2]],
 }
 
 /// The tilings penumbra has measured, by POV-Ray's number.
@@ -43,11 +49,17 @@ fn table(n: u8) -> Option<&'static Tiling> {
 
 /// Whether `tiling n` is modelled (the language refuses the others by name).
 pub fn supported(n: u8) -> bool {
-    table(n).is_some() || n == PENROSE_RHOMBS
+    table(n).is_some() || aperiodic(n).is_some()
 }
 
-/// The one aperiodic tiling modelled (src/appearance/tiling/penrose.rs).
-const PENROSE_RHOMBS: u8 = 27;
+/// The aperiodic tilings modelled (src/appearance/tiling/penrose.rs).
+fn aperiodic(n: u8) -> Option<penrose::Penrose> {
+    match n {
+        26 => Some(penrose::Penrose::KitesAndDarts),
+        27 => Some(penrose::Penrose::Rhombs),
+        _ => None,
+    }
+}
 
 /// The pavement measured for a choice of polyform, if penumbra has it.
 fn pavement(v: &crate::scene::Pavement) -> Option<&'static Tiling> {
@@ -85,8 +97,8 @@ pub fn pavement_value(v: &crate::scene::Pavement, p: DVec3) -> f64 {
 
 /// The pattern value of `tiling n` at a point (its y is ignored).
 pub fn tiling_value(n: u8, p: DVec3) -> f64 {
-    if n == PENROSE_RHOMBS {
-        return penrose::rhomb_value(DVec2::new(p.x, p.z));
+    if let Some(tiling) = aperiodic(n) {
+        return penrose::penrose_value(tiling, DVec2::new(p.x, p.z));
     }
     table(n).map_or(0.0, |t| bevelled(t, p))
 }
@@ -119,7 +131,7 @@ fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
         for dj in -2..=2 {
             let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
             for tile in t.tiles {
-                if let Some(d) = depth_in(tile, t.bevel, local) {
+                if let Some(d) = depth_in(tile, t, local) {
                     return Some((tile.kind, d));
                 }
             }
@@ -130,11 +142,12 @@ fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
 
 /// When `q` lies inside the tile, its distance to the tile's boundary in bevel widths (each
 /// edge's own width where the tile has them).
-fn depth_in(tile: &Tile, bevel: f64, q: DVec2) -> Option<f64> {
+fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
     let vertices = tile.vertices;
     let mut inside = false;
     let mut nearest = f64::INFINITY;
     let n = vertices.len();
+    let turn = orientation(vertices);
     for i in 0..n {
         let s = DVec2::from(vertices[i]);
         let e = DVec2::from(vertices[(i + 1) % n]);
@@ -142,11 +155,30 @@ fn depth_in(tile: &Tile, bevel: f64, q: DVec2) -> Option<f64> {
             inside = !inside;
         }
         let edge = e - s;
-        let t = ((q - s).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
-        let width = tile.edge_bevels.get(i).copied().unwrap_or(bevel);
-        nearest = nearest.min((s + edge * t).distance(q) / width);
+        let along = ((q - s).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
+        let width = tile.edge_bevels.get(i).copied().unwrap_or(t.bevel);
+        nearest = nearest.min((s + edge * along).distance(q) / width);
+        let before = s - DVec2::from(vertices[(i + n - 1) % n]);
+        if !t.grid.is_empty() && before.perp_dot(edge) * turn < 0.0 {
+            let p = q - s;
+            let corner = t
+                .grid
+                .iter()
+                .map(|&u| DVec2::from(u).perp_dot(p).abs())
+                .fold(0.0, f64::max);
+            nearest = nearest.min(corner / t.bevel);
+        }
     }
     inside.then_some(nearest)
+}
+
+/// The sign of a polygon's turning: +1 counter-clockwise in (x, z), -1 clockwise.
+fn orientation(vertices: &[[f64; 2]]) -> f64 {
+    let n = vertices.len();
+    let twice_area: f64 = (0..n)
+        .map(|i| DVec2::from(vertices[i]).perp_dot(DVec2::from(vertices[(i + 1) % n])))
+        .sum();
+    twice_area.signum()
 }
 
 #[cfg(test)]

@@ -23,6 +23,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             }],
             types: 1,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 2: regular hexagons, side 1, vertices at (c+-1, z); origin is a vertex
@@ -45,6 +46,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             }],
             types: 1,
             bevel: SQRT_3 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 3: equilateral triangles side 1; type 0 = up (base on z=0), type 1 = down (apex
@@ -72,6 +74,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 2,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 4
@@ -92,6 +95,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             }],
             types: 1,
             bevel: SQRT_3 / 4.0,
+            grid: &[],
         },
     ),
     // tiling 5: three 60-degree rhombi (side 1) meeting at the origin, forming a hexagon
@@ -134,6 +138,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_3 / 4.0,
+            grid: &[],
         },
     ),
     // tiling 6: 1x2 rectangles in a diagonal staircase: vertical (type 1) and horizontal (type
@@ -157,6 +162,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 2,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 7: octagon (type 1) centred at the origin, side 1; diamond square (type 0) at the
@@ -194,6 +200,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 2,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 8: elongated triangular: rows of unit squares (type 2) alternating with rows of
@@ -227,6 +234,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 9: trihexagonal (kagome), side 1: flat-top hexagon (type 2), up triangle (type
@@ -262,6 +270,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 10: unit squares in rows offset by 1/2 (running bond); one type
@@ -277,6 +286,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             }],
             types: 1,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 11: Tiling 11: unit squares (type 0), horizontal 2x1 rectangles (type 1),
@@ -315,6 +325,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 12: Tiling 12: unit squares (type 0), horizontal 2x1 rectangles (type 1, in 4x2
@@ -380,6 +391,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 13: Tiling 13. Measured period 2*sqrt(2) in x and z (NOT 1+sqrt(3) as the wiki
@@ -449,6 +461,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_2 / 4.0,
+            grid: &[],
         },
     ),
     // tiling 14: Tiling 14 (same geometry as 13, 5 types). Measured period 2*sqrt(2) in x and
@@ -519,6 +532,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 5,
             bevel: SQRT_2 / 4.0,
+            grid: &[],
         },
     ),
     // tiling 15: Tiling 15: Pythagorean tiling, unit squares (type 0) and 2x2 squares (type
@@ -543,6 +557,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 2,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 16: Tiling 16: rhombitrihexagonal tiling 3.4.6.4, side 1, flat-topped hexagons
@@ -620,6 +635,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 17: Tiling 17: same geometry as tiling 16 (rhombitrihexagonal 3.4.6.4, side 1,
@@ -696,6 +712,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 6,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 18: Tiling 18: basket weave of 2x1 rectangles in 2x2 pairs; horizontal rectangles
@@ -749,6 +766,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 2,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 19: snub hexagonal tiling 3.3.3.3.6, side 1; hexagons (type 2) centred at (-1,0)
@@ -842,6 +860,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 20: snub hexagonal tiling 3.3.3.3.6, side 1; mirror image of tiling 19; hexagons
@@ -924,6 +943,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 21: snub square tiling 3.3.4.3.4, side 1, square period 1+sqrt(3) (lattice is
@@ -992,6 +1012,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 6,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 22: truncated hexagonal tiling 3.12.12, side 1. Dodecagons (type 2) centred at
@@ -1060,6 +1081,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: SQRT_3 / 6.0,
+            grid: &[],
         },
     ),
     // tiling 23: truncated trihexagonal tiling 4.6.12, side 1. Dodecagon (type 2) centred at
@@ -1146,6 +1168,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 3,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
     // tiling 24: truncated trihexagonal tiling 4.6.12, same geometry as tiling 23. Dodecagon
@@ -1232,6 +1255,7 @@ pub(super) const TILINGS: &[(u8, Tiling)] = &[
             ],
             types: 5,
             bevel: 1.0 / 2.0,
+            grid: &[],
         },
     ),
 ];

@@ -1,3 +1,3 @@
 #version 3.7;
-plane { z, 0 normal { bump_map { png "bumpmap_.png" map_type 1 } } }
-// error: 2:53 unsupported: `map_type in a bump_map` is not supported yet
+plane { z, 0 normal { bump_map { png "bumpmap_.png" map_type 3 } } }
+// error: 2:53 unsupported: `map_type other than 0, 1, 2, 5` is not supported yet
