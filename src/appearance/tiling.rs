@@ -147,7 +147,12 @@ fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
     let mut inside = false;
     let mut nearest = f64::INFINITY;
     let n = vertices.len();
-    let turn = orientation(vertices);
+    // Only pavements look for reflex corners; tilings' tiles are convex.
+    let turn = if t.grid.is_empty() {
+        0.0
+    } else {
+        orientation(vertices)
+    };
     for i in 0..n {
         let s = DVec2::from(vertices[i]);
         let e = DVec2::from(vertices[(i + 1) % n]);
@@ -155,11 +160,10 @@ fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
             inside = !inside;
         }
         let edge = e - s;
-        let along = ((q - s).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
         let width = tile.edge_bevels.get(i).copied().unwrap_or(t.bevel);
-        nearest = nearest.min((s + edge * along).distance(q) / width);
+        nearest = nearest.min(segment_distance(q, s, e) / width);
         let before = s - DVec2::from(vertices[(i + n - 1) % n]);
-        if !t.grid.is_empty() && before.perp_dot(edge) * turn < 0.0 {
+        if before.perp_dot(edge) * turn < 0.0 {
             let p = q - s;
             let corner = t
                 .grid
@@ -170,6 +174,13 @@ fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
         }
     }
     inside.then_some(nearest)
+}
+
+/// The distance from `q` to the segment from `s` to `e`.
+fn segment_distance(q: DVec2, s: DVec2, e: DVec2) -> f64 {
+    let edge = e - s;
+    let along = ((q - s).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
+    (s + edge * along).distance(q)
 }
 
 /// The sign of a polygon's turning: +1 counter-clockwise in (x, z), -1 clockwise.

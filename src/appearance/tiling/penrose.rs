@@ -179,12 +179,7 @@ fn triangle_holds(t: [DVec2; 3], p: DVec2) -> bool {
 fn polygon_depth(corners: &[DVec2], p: DVec2) -> f64 {
     let n = corners.len();
     (0..n)
-        .map(|i| {
-            let (s, e) = (corners[i], corners[(i + 1) % n]);
-            let edge = e - s;
-            let t = ((p - s).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
-            (s + edge * t).distance(p)
-        })
+        .map(|i| super::segment_distance(p, corners[i], corners[(i + 1) % n]))
         .fold(f64::INFINITY, f64::min)
 }
 
