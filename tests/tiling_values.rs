@@ -100,9 +100,8 @@ fn every_tiling_but_penroses_first_gives_povrays_values() {
 }
 
 /// All 112 of POV-Ray's pavements (the polyforms of 1 to 6 triangles and squares and of 1
-/// to 5 hexagons), with the default corners.
-#[test]
-fn every_pavement_gives_povrays_values() {
+/// to 5 hexagons), each followed by `styles`.
+fn every_pavement(styles: &str) -> Vec<String> {
     let counts: [(u8, &[u8]); 3] = [
         (3, &[1, 1, 1, 3, 4, 12]),
         (4, &[1, 1, 2, 5, 12, 35]),
@@ -113,16 +112,91 @@ fn every_pavement_gives_povrays_values() {
         for (tiles, &count) in (1..).zip(per_size) {
             for pattern in 1..=count {
                 patterns.push(format!(
-                    "pavement number_of_sides {sides} number_of_tiles {tiles} pattern {pattern}"
+                    "pavement number_of_sides {sides} number_of_tiles {tiles} pattern {pattern} \
+                     {styles}"
                 ));
             }
         }
     }
     assert_eq!(patterns.len(), 112);
-    let Some(worst) = worst_differences(&patterns) else {
+    patterns
+}
+
+/// The 112 pavements with the default corners.
+#[test]
+fn every_pavement_gives_povrays_values() {
+    let Some(worst) = worst_differences(&every_pavement("")) else {
         return;
     };
     for (pattern, d) in worst {
         assert!(d < 1e-5, "{pattern}: POV-Ray's value differs by {d}");
     }
 }
+
+/// The corner styles, each where it applies (exterior at 60 and 90-degree corners, form at
+/// the bends of squares and 120-degree corners, interior at reflex and straight ones) and in
+/// combination. `PENUMBRA_PAVEMENT_STYLES=all` runs ten combinations on all 112 pavements
+/// instead (about 15 minutes; the result is recorded in docs/appearance.md).
+#[test]
+fn pavement_corner_styles_give_povrays_values() {
+    let sample = [
+        "4 5 3 exterior 1",
+        "4 5 3 exterior 2",
+        "4 6 20 interior 1",
+        "4 6 20 interior 2",
+        "4 3 2 form 1",
+        "4 4 5 form 2",
+        "4 5 3 form 3 interior 2 exterior 1",
+        "3 6 7 exterior 1 interior 2",
+        "3 6 7 exterior 2 form 1",
+        "3 5 4 form 2 interior 1",
+        "3 4 2 form 3 interior 1 exterior 2",
+        "6 4 7 form 1 interior 2",
+        "6 5 13 form 2 interior 1",
+        "6 3 2 form 3 exterior 2 interior 2",
+    ];
+    let patterns: Vec<String> = if std::env::var("PENUMBRA_PAVEMENT_STYLES").as_deref() == Ok("all")
+    {
+        STYLE_SWEEP.iter().flat_map(|s| every_pavement(s)).collect()
+    } else {
+        sample
+            .iter()
+            .map(|s| {
+                let mut w = s.splitn(4, ' ');
+                let (sides, tiles, pattern) = (w.next(), w.next(), w.next());
+                format!(
+                    "pavement number_of_sides {} number_of_tiles {} pattern {} {}",
+                    sides.unwrap(),
+                    tiles.unwrap(),
+                    pattern.unwrap(),
+                    w.next().unwrap()
+                )
+            })
+            .collect()
+    };
+    let Some(worst) = worst_differences(&patterns) else {
+        return;
+    };
+    let largest = worst.iter().map(|(_, d)| *d).fold(0.0, f64::max);
+    eprintln!(
+        "{} pavements with corner styles: largest difference {largest:e}",
+        worst.len()
+    );
+    for (pattern, d) in worst {
+        assert!(d < 1e-5, "{pattern}: POV-Ray's value differs by {d}");
+    }
+}
+
+/// The combinations the full sweep runs.
+const STYLE_SWEEP: [&str; 10] = [
+    "exterior 1",
+    "exterior 2",
+    "interior 1",
+    "interior 2",
+    "form 1",
+    "form 2",
+    "form 3 interior 2 exterior 1",
+    "form 1 interior 1 exterior 2",
+    "form 2 interior 2 exterior 2",
+    "form 3 interior 1 exterior 2",
+];

@@ -11,6 +11,7 @@
 
 use glam::{DVec2, DVec3};
 
+mod corners;
 mod pavements;
 mod penrose;
 mod table;
@@ -84,15 +85,18 @@ pub fn pavement_count(sides: u8, tiles: u8) -> u8 {
         .unwrap_or(0)
 }
 
-/// Whether a pavement is modelled: its polyform's table is measured, with the corners
-/// POV-Ray draws by default (the other corner styles are not measured yet).
-pub fn pavement_supported(v: &crate::scene::Pavement) -> bool {
-    pavement(v).is_some() && (v.form, v.interior, v.exterior) == (0, 0, 0)
-}
-
 /// The pattern value of a pavement at a point (its y is ignored).
 pub fn pavement_value(v: &crate::scene::Pavement, p: DVec3) -> f64 {
-    pavement(v).map_or(0.0, |t| bevelled(t, p))
+    let Some(t) = pavement(v) else {
+        return 0.0;
+    };
+    if corners::plain(v) {
+        return bevelled(t, p);
+    }
+    locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |found| {
+        let plain_rise = 1.0 - found.depth;
+        corners::styled_rise(v, t, found.tile, found.local, plain_rise).max(BODY)
+    })
 }
 
 /// The pattern value of `tiling n` at a point (its y is ignored).
@@ -105,9 +109,9 @@ pub fn tiling_value(n: u8, p: DVec3) -> f64 {
 
 /// A tiling's value: the tile's type, raised by the bevel near its edge.
 fn bevelled(t: &Tiling, p: DVec3) -> f64 {
-    locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |(kind, depth)| {
-        let rise = (1.0 - depth).max(BODY);
-        (f64::from(kind) + rise) / f64::from(t.types)
+    locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |found| {
+        let rise = (1.0 - found.depth).max(BODY);
+        (f64::from(found.tile.kind) + rise) / f64::from(t.types)
     })
 }
 
@@ -118,9 +122,15 @@ fn bevelled(t: &Tiling, p: DVec3) -> f64 {
 /// them, colours the body with the type's own entry rather than the caulk below it.
 const BODY: f64 = 1e-10;
 
-/// The type of the tile holding `q` and how deep `q` lies in it: its distance to the
-/// tile's boundary in bevel widths.
-fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
+/// The tile holding a point, the point in the coordinates of the tile's cell, and how deep
+/// it lies in the tile: its distance to the tile's boundary in bevel widths.
+struct Found<'a> {
+    tile: &'a Tile,
+    local: DVec2,
+    depth: f64,
+}
+
+fn locate(t: &Tiling, q: DVec2) -> Option<Found<'_>> {
     let (a, b) = (DVec2::from(t.a), DVec2::from(t.b));
     let det = a.perp_dot(b);
     let u = (q.perp_dot(b) / det).floor();
@@ -131,8 +141,8 @@ fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
         for dj in -2..=2 {
             let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
             for tile in t.tiles {
-                if let Some(d) = depth_in(tile, t, local) {
-                    return Some((tile.kind, d));
+                if let Some(depth) = depth_in(tile, t, local) {
+                    return Some(Found { tile, local, depth });
                 }
             }
         }
@@ -144,7 +154,9 @@ fn locate(t: &Tiling, q: DVec2) -> Option<(u8, f64)> {
 /// edge's own width where the tile has them).
 fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
     let vertices = tile.vertices;
-    let mut inside = false;
+    if !inside(vertices, q) {
+        return None;
+    }
     let mut nearest = f64::INFINITY;
     let n = vertices.len();
     // Only pavements look for reflex corners; tilings' tiles are convex.
@@ -156,9 +168,6 @@ fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
     for i in 0..n {
         let s = DVec2::from(vertices[i]);
         let e = DVec2::from(vertices[(i + 1) % n]);
-        if (s.y > q.y) != (e.y > q.y) && q.x < s.x + (q.y - s.y) * (e.x - s.x) / (e.y - s.y) {
-            inside = !inside;
-        }
         let edge = e - s;
         let width = tile.edge_bevels.get(i).copied().unwrap_or(t.bevel);
         nearest = nearest.min(segment_distance(q, s, e) / width);
@@ -173,7 +182,21 @@ fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
             nearest = nearest.min(corner / t.bevel);
         }
     }
-    inside.then_some(nearest)
+    Some(nearest)
+}
+
+/// Whether `q` lies inside the polygon (by the crossings of a ray along +x).
+fn inside(vertices: &[[f64; 2]], q: DVec2) -> bool {
+    let n = vertices.len();
+    let mut inside = false;
+    for i in 0..n {
+        let s = DVec2::from(vertices[i]);
+        let e = DVec2::from(vertices[(i + 1) % n]);
+        if (s.y > q.y) != (e.y > q.y) && q.x < s.x + (q.y - s.y) * (e.x - s.x) / (e.y - s.y) {
+            inside = !inside;
+        }
+    }
+    inside
 }
 
 /// The distance from `q` to the segment from `s` to `e`.
@@ -210,12 +233,30 @@ mod tests {
             for i in 0..2000 {
                 let x = f64::from(i % 40) * 0.731 - 17.0;
                 let z = f64::from(i / 40) * 0.593 - 15.0;
-                let found = locate(t, DVec2::new(x, z));
+                let found = locate(t, DVec2::new(x, z)).map(|f| (f.tile.kind, f.depth));
                 assert!(found.is_some(), "tiling {n} has a gap at ({x}, {z})");
                 let (kind, d) = found.unwrap();
                 assert!(kind < t.types && d >= 0.0, "tiling {n} at ({x}, {z})");
             }
         }
+    }
+
+    #[test]
+    fn every_polyform_pov_ray_counts_has_a_table() {
+        for sides in [3, 4, 6] {
+            for tiles in 1..=6 {
+                for pattern in 1..=pavement_count(sides, tiles) {
+                    let v = crate::scene::Pavement {
+                        sides,
+                        tiles,
+                        pattern,
+                        ..Default::default()
+                    };
+                    assert!(pavement(&v).is_some(), "{sides} {tiles} {pattern}");
+                }
+            }
+        }
+        assert_eq!(PAVEMENTS.len(), 112);
     }
 
     #[test]

@@ -604,7 +604,7 @@ impl Evaluator<'_> {
     }
 
     /// A pavement whose block has closed at `span`: its polyform must exist (POV-Ray refuses
-    /// hexagons of 6 and patterns past the count of their polyforms) and be measured.
+    /// hexagons of 6 and patterns past the count of their polyforms).
     fn check_pavement(&self, pattern: Option<&Pattern>, span: Span) -> R<()> {
         let Some(PatternKind::Pavement(v)) = pattern.map(|p| &p.kind) else {
             return Ok(());
@@ -619,17 +619,7 @@ impl Evaluator<'_> {
                 ),
             ));
         }
-        if crate::appearance::tiling::pavement_supported(v) {
-            return Ok(());
-        }
-        Err(self.err(
-            span,
-            format!(
-                "unsupported: pavement number_of_sides {} number_of_tiles {} pattern {} form {} \
-                 interior {} exterior {} is not supported yet",
-                v.sides, v.tiles, v.pattern, v.form, v.interior, v.exterior
-            ),
-        ))
+        Ok(())
     }
 
     /// `slope { <d> [, lo, hi] [altitude <a> [, lo, hi]] }` (the braces may be left out,
