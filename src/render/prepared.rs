@@ -426,8 +426,9 @@ impl Builder {
         if top {
             self.world.add_top(item);
             // A target that neither reflects nor refracts photons gets none (POV-Ray: photon
-            // time 0.000 s for such a scene).
+            // time 0.000 s for such a scene), nor does one photons go through.
             if self.photons
+                && !(f.no_shadow || f.no_image)
                 && f.photons
                     .is_some_and(|p| p.target && (p.reflection || p.refraction))
             {
@@ -683,8 +684,11 @@ impl Builder {
         let photons = looks.flags.photons.unwrap_or_default();
         // POV-Ray's shadow rays stop at a target that refracts photons: the photons bring
         // the light that passes through it (measured: the shadow under a clear glass
-        // target is black but for its caustic).
-        let photons_refract = self.photons && photons.target && photons.refraction;
+        // target is black but for its caustic). Photons go through `no_shadow` and
+        // `no_image` objects, and so does the light then (measured: a `no_image` glass
+        // target's shadow lets the light through, with no caustic).
+        let photons_meet = !(looks.flags.no_shadow || looks.flags.no_image);
+        let photons_refract = self.photons && photons.target && photons.refraction && photons_meet;
         self.materials.push(Material {
             texture: looks.texture.clone(),
             double_illuminate: looks.flags.double_illuminate,

@@ -34,6 +34,11 @@ impl InteriorStack {
         }
     }
 
+    /// Whether the ray is inside no interior at all.
+    pub(super) fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
     pub(super) fn contains(&self, id: u32) -> bool {
         self.ids[..self.len].contains(&id)
     }

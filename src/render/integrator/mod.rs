@@ -631,9 +631,15 @@ impl<'a> Integrator<'a> {
 /// The interiors of the objects whose solid holds the camera (in no particular order:
 /// containers nested around the camera are rare).
 fn camera_interiors(scene: &PreparedScene) -> InteriorStack {
+    interiors_at(scene, scene.camera.location)
+}
+
+/// The interiors of the objects whose solid holds a point (a camera, or a light its
+/// photons leave).
+fn interiors_at(scene: &PreparedScene, point: DVec3) -> InteriorStack {
     scene
         .world
-        .containing(scene.camera.location)
+        .containing(point)
         .fold(InteriorStack::OUTSIDE, |stack, material| {
             let m = &scene.materials[material as usize];
             stack.entered(m.interior_id, m.interior.ior, m.hollow)
@@ -651,9 +657,6 @@ fn branches(s: &Shading, top: &Top) -> Branches {
         geometric
     };
     let mirror = mirror_direction(d, n, outside);
-    // `reflection { metallic }` tints the reflection as `metallic` tints highlights.
-    let reflect = surface_reflectivity(top.finish, cos_i, eta_from, eta_to)
-        * metallic_tint(top.finish.reflection.metallic, top.pigment.rgb, cos_i);
     let eta = eta_from / eta_to;
     let straight = (eta - 1.0).abs() < 1e-12;
     // (Opaque surfaces transmit nothing: no refraction to compute.)
@@ -662,6 +665,14 @@ fn branches(s: &Shading, top: &Top) -> Branches {
     } else {
         refract(d, n, eta)
     };
+    let fresnel_side = if s.leaving && refracted.is_some() && !beyond.is_empty() {
+        FresnelSide::IntoOuterInterior
+    } else {
+        FresnelSide::Other
+    };
+    // `reflection { metallic }` tints the reflection as `metallic` tints highlights.
+    let reflect = surface_reflectivity(top.finish, cos_i, (eta_from, eta_to), fresnel_side)
+        * metallic_tint(top.finish.reflection.metallic, top.pigment.rgb, cos_i);
     let total_internal = refracted.is_none();
     let transmit = transmitted_weight(
         top.through,
@@ -674,7 +685,7 @@ fn branches(s: &Shading, top: &Top) -> Branches {
         reflect,
         top.through,
         s.fade_through,
-        total_internal,
+        (total_internal, beyond.is_empty()),
         top.finish.conserve_energy,
     );
     Branches {
@@ -710,15 +721,40 @@ fn crossing_at(s: &Shading, wavelength: Option<f64>) -> (f64, f64, InteriorStack
     }
 }
 
+/// Where a ray meets a surface, as far as `fresnel` is concerned.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum FresnelSide {
+    /// Leaving an interior, where the light could cross, into another object's interior
+    /// (a glass in a closed room).
+    IntoOuterInterior,
+    Other,
+}
+
 /// Per-channel reflectivity: `reflection {min, max falloff}`, or Fresnel for light going
-/// from a medium of index `eta_from` into one of `eta_to`.
-fn surface_reflectivity(finish: &Finish, cos_i: f64, eta_from: f64, eta_to: f64) -> DVec3 {
+/// from a medium of index `eta_from` into one of `eta_to`. A ray leaving an interior into
+/// another object's interior, where it could cross, gets fresnel's 0 (the reflectivity
+/// `min`), not Fresnel's inner reflectance; into the atmosphere it gets the inner
+/// reflectance. Measured on a glass prism (ior 1.5, faded, so that the unfaded internal
+/// reflection shows) met from inside at 15 to 41 degrees: inside a sphere round the scene or
+/// in front of a plane whose inside holds it, `reflection { 0, 1 fresnel on }` renders as no
+/// reflection and `{ 0.1, 1 fresnel on }` as `reflection 0.1`, to 1e-4; in the open, as the
+/// equations give (and scenes/glass.pov's sphere needs). Beyond the critical angle fresnel
+/// gives `max` either way.
+fn surface_reflectivity(
+    finish: &Finish,
+    cos_i: f64,
+    (eta_from, eta_to): (f64, f64),
+    side: FresnelSide,
+) -> DVec3 {
     let refl = &finish.reflection;
     if refl.is_zero() {
         return DVec3::ZERO;
     }
     if refl.fresnel {
-        let f = fresnel(cos_i.abs(), eta_to / eta_from);
+        let f = match side {
+            FresnelSide::IntoOuterInterior => 0.0,
+            FresnelSide::Other => fresnel(cos_i.abs(), eta_to / eta_from),
+        };
         return f * refl.max + (1.0 - f) * refl.min;
     }
     reflectivity(refl.min, refl.max, refl.falloff, cos_i)
@@ -751,16 +787,18 @@ fn transmitted_weight(
 
 /// The weight of the reflected branch. A surface left from inside reflects unfaded, but
 /// under total internal reflection POV-Ray fades the finish's reflection too, with the
-/// rest, by the stretch just travelled, unless conserve_energy left nothing to transmit
-/// (fresnel's reflectivity 1), when only the reflection, unfaded, remains (measured on a
-/// 45-degree glass prism seen through its long face, fade over 2 units: reflection 0.2
-/// gives 0.3413 without and 0.2905 with conserve_energy, fresnel 0.1765 without and 0.6213
-/// with; each the sum over its paths to 1e-4 under this rule).
+/// rest, by the stretch just travelled. One exception: where conserve_energy leaves nothing
+/// to transmit (fresnel's reflectivity 1) and beyond the surface is no interior at all (the
+/// atmosphere), only the reflection, unfaded, remains. Measured on glass prisms (ior 1.5,
+/// exponential fade) met by one and by two total reflections: the unfaded rule holds to 2e-3
+/// for a prism in the open, with the stretches split three ways; the same prism inside any
+/// other object (a sphere round it, hollow or not, or a plane behind it, whose inside holds
+/// the scene) fades the whole path (0.3932 against 0.6222 for fresnel with conserve_energy).
 fn internally_reflected(
     reflect: DVec3,
     through: DVec3,
     fade: DVec3,
-    total_internal: bool,
+    (total_internal, into_atmosphere): (bool, bool),
     conserve_energy: bool,
 ) -> DVec3 {
     let would_transmit = if conserve_energy {
@@ -768,10 +806,10 @@ fn internally_reflected(
     } else {
         through
     };
-    if total_internal && would_transmit != DVec3::ZERO {
-        reflect * fade
-    } else {
+    if !total_internal || (would_transmit == DVec3::ZERO && into_atmosphere) {
         reflect
+    } else {
+        reflect * fade
     }
 }
 
@@ -784,13 +822,22 @@ mod tests {
         let (through, fade) = (DVec3::ONE, DVec3::splat(0.5));
         let r = DVec3::splat(0.2);
         // Leaving without total internal reflection: the reflection is not faded.
-        assert_eq!(internally_reflected(r, through, fade, false, true), r);
-        assert_eq!(internally_reflected(r, through, fade, true, false), r * 0.5);
-        assert_eq!(internally_reflected(r, through, fade, true, true), r * 0.5);
-        // Fresnel's reflectivity 1: faded without conserve_energy, not with it.
+        let open = (true, true);
+        assert_eq!(
+            internally_reflected(r, through, fade, (false, true), true),
+            r
+        );
+        assert_eq!(internally_reflected(r, through, fade, open, false), r * 0.5);
+        assert_eq!(internally_reflected(r, through, fade, open, true), r * 0.5);
+        // Fresnel's reflectivity 1: faded without conserve_energy, not with it, unless
+        // the surface leads into another interior.
         let all = DVec3::ONE;
-        assert_eq!(internally_reflected(all, through, fade, true, false), fade);
-        assert_eq!(internally_reflected(all, through, fade, true, true), all);
+        assert_eq!(internally_reflected(all, through, fade, open, false), fade);
+        assert_eq!(internally_reflected(all, through, fade, open, true), all);
+        assert_eq!(
+            internally_reflected(all, through, fade, (true, false), true),
+            fade
+        );
     }
 
     #[test]
@@ -825,11 +872,16 @@ mod tests {
         finish.reflection.max = DVec3::ONE;
         finish.reflection.fresnel = true;
         // Normal incidence from air into glass: 4%.
-        let r = surface_reflectivity(&finish, 1.0, 1.0, 1.5);
+        let r = surface_reflectivity(&finish, 1.0, (1.0, 1.5), FresnelSide::Other);
         assert!((r - DVec3::splat(0.04)).length() < 1e-12, "{r}");
         // Beyond the critical angle inside glass: all of it.
-        let r = surface_reflectivity(&finish, 0.2, 1.5, 1.0);
+        let r = surface_reflectivity(&finish, 0.2, (1.5, 1.0), FresnelSide::Other);
         assert!((r - DVec3::ONE).length() < 1e-12, "{r}");
+        // Leaving glass into another interior where the light could cross: POV-Ray's
+        // fresnel gives min.
+        finish.reflection.min = DVec3::splat(0.1);
+        let r = surface_reflectivity(&finish, 0.9, (1.5, 1.0), FresnelSide::IntoOuterInterior);
+        assert_eq!(r, DVec3::splat(0.1));
     }
 
     #[test]

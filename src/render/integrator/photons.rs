@@ -19,6 +19,12 @@ use crate::scene::LightKind;
 use super::interiors::InteriorStack;
 use super::{Branches, Integrator, Path, Shading, Top, branches};
 
+/// What photons go through unchanged: `photons { pass_through }`, and, as in POV-Ray,
+/// objects that are `no_shadow` or `no_image` (measured: a glass sphere target with either
+/// flag stores no photon and leaves the caustic of a second glass sphere below it exactly
+/// as without it, 80,874 photons stored in both).
+const PHOTON_SKIP: u8 = flags::PHOTON_PASS | flags::NO_SHADOW | flags::NO_IMAGE;
+
 /// Keeps the photons' random streams apart from every other stream of the seed.
 const PHOTON_SALT: u64 = 0x5048_4f54_4f4e_0001;
 
@@ -81,7 +87,8 @@ impl Beam {
         }
     }
 
-    /// The k-th of n photons: its ray and the light it carries (before its path's length).
+    /// The k-th of n photons: its ray, and the light it carries per unit of the density
+    /// of photons in its direction (see `density`; before its path's length).
     fn photon(&self, light: &PreparedLight, (k, n): (u32, u32), rng: &mut Pcg32) -> (Ray, DVec3) {
         // Stratified over the cone's (or disc's) first coordinate, uniform over the turn.
         let u = (f64::from(k) + unit_f64(rng)) / f64::from(n);
@@ -92,20 +99,41 @@ impl Beam {
             let cos = 1.0 - u * (1.0 - self.cos_max);
             let sin = (1.0 - cos * cos).max(0.0).sqrt();
             let dir = self.axis * cos + across * sin;
-            let solid_angle = std::f64::consts::TAU * (1.0 - self.cos_max);
             let cone = light
                 .incidence_from(self.origin + dir, self.origin)
                 .map_or(0.0, |i| i.factor / light.fade(1.0));
-            let power = light.colour * (solid_angle / f64::from(n) * cone);
-            (Ray::new(self.origin, dir), power)
+            (Ray::new(self.origin, dir), light.colour * cone)
         } else {
             let start = self.origin + across * (self.radius * u.sqrt());
-            let area = std::f64::consts::PI * self.radius * self.radius;
             let beam = light
                 .incidence(start + self.axis)
                 .map_or(0.0, |i| i.factor / light.fade(1.0));
-            let power = light.colour * (area / f64::from(n) * beam);
-            (Ray::new(start, self.axis), power)
+            (Ray::new(start, self.axis), light.colour * beam)
+        }
+    }
+
+    /// The beam's solid angle (cones) or area (discs).
+    fn measure(&self) -> f64 {
+        if self.spreads {
+            std::f64::consts::TAU * (1.0 - self.cos_max)
+        } else {
+            std::f64::consts::PI * self.radius * self.radius
+        }
+    }
+
+    /// How densely `n` photons of this beam fall about a photon's ray: per steradian of
+    /// its cone, or per unit area of its disc; 0 when the ray lies outside the beam.
+    fn density(&self, ray: &Ray, n: u32) -> f64 {
+        let inside = if self.spreads {
+            ray.direction.normalize().dot(self.axis) >= self.cos_max
+        } else {
+            let off = ray.origin - self.origin;
+            (off - self.axis * off.dot(self.axis)).length() <= self.radius
+        };
+        if inside {
+            f64::from(n) / self.measure()
+        } else {
+            0.0
         }
     }
 }
@@ -124,6 +152,34 @@ fn area_origin(light: &PreparedLight, target: &Aabb, rng: &mut Pcg32) -> Option<
     let frame = area.frame(light.location, towards);
     let s = (unit_f64(rng), unit_f64(rng));
     Some(area.sample_point(&frame, s, AreaLightMode::Continuous, true))
+}
+
+/// Every target's beam as if the light stood at `origin`, written into `beams`.
+fn beams_from(
+    light: &PreparedLight,
+    origin: DVec3,
+    targets: &[Aabb],
+    beams: &mut Vec<Option<Beam>>,
+) {
+    beams.clear();
+    beams.extend(targets.iter().map(|t| Beam::from(light, origin, t)));
+}
+
+/// The density of photons about a ray of beam `own`, summed over every beam that holds it.
+/// Targets' beams overlap (a ring round a ball: the ring's cone holds the ball's), and a
+/// photon carries its light over this sum (the balance heuristic), so that light reaching a
+/// target through several beams is counted once, not once per beam.
+fn overlap_density(beams: &[Option<Beam>], own: usize, ray: &Ray, n: u32) -> f64 {
+    let own_beam = beams[own].expect("the photon's own beam");
+    let others: f64 = (beams.iter().enumerate())
+        .filter(|&(i, _)| i != own)
+        .filter_map(|(_, b)| b.as_ref().map(|b| b.density(ray, n)))
+        .sum();
+    // The photon's own beam counts whatever rounding says at its cone's edge.
+    let own_density = own_beam
+        .density(ray, n)
+        .max(f64::from(n) / own_beam.measure());
+    own_density + others
 }
 
 impl Integrator<'_> {
@@ -145,22 +201,29 @@ impl Integrator<'_> {
         let n = (count / pairs).max(1);
         for &l in &lights {
             let light = &self.scene.lights[l];
-            for (t, target) in targets.iter().enumerate() {
-                let Some(beam) = Beam::new(light, target) else {
+            let beams: Vec<Option<Beam>> = targets.iter().map(|t| Beam::new(light, t)).collect();
+            // An area light's photons each start at their own point: the beams from there.
+            let mut moved = Vec::with_capacity(targets.len());
+            for t in 0..targets.len() {
+                if beams[t].is_none() {
                     continue;
-                };
+                }
                 let key = mix(seed ^ PHOTON_SALT ^ (u64::from(pass) << 32) ^ ((l as u64) << 16))
                     ^ mix(t as u64);
                 let mut rng = Pcg32::new(key, mix(key) | 1);
                 for k in 0..n {
-                    let beam = match area_origin(light, target, &mut rng) {
-                        Some(origin) => match Beam::from(light, origin, target) {
-                            Some(b) => b,
-                            None => continue,
-                        },
-                        None => beam,
+                    let from = match area_origin(light, &targets[t], &mut rng) {
+                        Some(origin) => {
+                            beams_from(light, origin, targets, &mut moved);
+                            &moved
+                        }
+                        None => &beams,
                     };
-                    let (ray, power) = beam.photon(light, (k, n), &mut rng);
+                    let Some(beam) = from[t] else {
+                        continue;
+                    };
+                    let (ray, light_in) = beam.photon(light, (k, n), &mut rng);
+                    let power = light_in / overlap_density(from, t, &ray, n);
                     if power != DVec3::ZERO {
                         self.trace_photon(ray, power, (light, &beam), &mut rng, &mut out);
                     }
@@ -186,8 +249,10 @@ impl Integrator<'_> {
         let mut path = Path {
             level: 1,
             weight: 1.0,
-            skip: flags::PHOTON_PASS,
-            interiors: InteriorStack::OUTSIDE,
+            skip: PHOTON_SKIP,
+            // Photons start inside whatever holds their light, as camera rays start inside
+            // what holds the camera (glassthing's glass stands in a closed room).
+            interiors: super::interiors_at(self.scene, ray.origin),
             wavelength: None,
             bounces: 0,
         };
