@@ -99,6 +99,20 @@ impl PixelSampler {
         )
     }
 
+    /// Sample `j` of `n` drawn in place of this one: the same pixel, its values from sample
+    /// `index * n + j` of `samples_per_pixel * n`, so that the pixel's sub-samples are
+    /// stratified together and each is a pure function of (pixel, index, j, dimension).
+    pub fn subsample(&self, j: u32, n: u32) -> PixelSampler {
+        let mut sub = PixelSampler {
+            stratified: self.stratified,
+            ..PixelSampler::new(self.samples_per_pixel.saturating_mul(n))
+        };
+        sub.pixel_key = self.pixel_key;
+        sub.index = self.index * n + j;
+        sub.dimension = self.dimension;
+        sub
+    }
+
     /// Which sample of the pixel this is.
     pub fn index(&self) -> u32 {
         self.index
@@ -213,6 +227,27 @@ pub fn permute(mut i: u32, len: u32, seed: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn subsamples_are_stratified_together_and_pure() {
+        // 4 samples of a pixel, each split into 8: the 32 sub-samples' values in one
+        // dimension fall one per stratum of 1/32, and drawing again gives the same.
+        let (spp, n) = (4u32, 8u32);
+        let mut sampler = PixelSampler::new(spp);
+        let mut seen = vec![false; (spp * n) as usize];
+        for index in 0..spp {
+            sampler.start(3, 5, index, 42);
+            sampler.set_dimension(7);
+            for j in 0..n {
+                let v = sampler.subsample(j, n).get_1d();
+                assert_eq!(v, sampler.subsample(j, n).get_1d());
+                let stratum = (v * f64::from(spp * n)) as usize;
+                assert!(!seen[stratum], "stratum {stratum} twice");
+                seen[stratum] = true;
+            }
+        }
+        assert!(seen.iter().all(|&s| s));
+    }
 
     #[test]
     fn permute_is_a_bijection() {
