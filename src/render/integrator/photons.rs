@@ -205,19 +205,23 @@ impl Integrator<'_> {
             // An area light's photons each start at their own point: the beams from there.
             let mut moved = Vec::with_capacity(targets.len());
             for t in 0..targets.len() {
-                if beams[t].is_none() {
+                let Some(own) = beams[t] else {
                     continue;
-                }
+                };
+                // Photons start inside whatever holds their light, as camera rays start
+                // inside what holds the camera (glassthing's glass stands in a closed room):
+                // found once per beam, or per photon where each starts at its own point.
+                let own_start = super::interiors_at(self.scene, own.origin);
                 let key = mix(seed ^ PHOTON_SALT ^ (u64::from(pass) << 32) ^ ((l as u64) << 16))
                     ^ mix(t as u64);
                 let mut rng = Pcg32::new(key, mix(key) | 1);
                 for k in 0..n {
-                    let from = match area_origin(light, &targets[t], &mut rng) {
+                    let (from, start) = match area_origin(light, &targets[t], &mut rng) {
                         Some(origin) => {
                             beams_from(light, origin, targets, &mut moved);
-                            &moved
+                            (&moved, super::interiors_at(self.scene, origin))
                         }
-                        None => &beams,
+                        None => (&beams, own_start),
                     };
                     let Some(beam) = from[t] else {
                         continue;
@@ -225,7 +229,8 @@ impl Integrator<'_> {
                     let (ray, light_in) = beam.photon(light, (k, n), &mut rng);
                     let power = light_in / overlap_density(from, t, &ray, n);
                     if power != DVec3::ZERO {
-                        self.trace_photon(ray, power, (light, &beam), &mut rng, &mut out);
+                        let from_light = (light, &beam, start);
+                        self.trace_photon(ray, power, from_light, &mut rng, &mut out);
                     }
                 }
             }
@@ -238,7 +243,7 @@ impl Integrator<'_> {
         &self,
         mut ray: Ray,
         mut power: DVec3,
-        (light, beam): (&PreparedLight, &Beam),
+        (light, beam, start): (&PreparedLight, &Beam, InteriorStack),
         rng: &mut Pcg32,
         out: &mut Vec<Photon>,
     ) {
@@ -250,9 +255,7 @@ impl Integrator<'_> {
             level: 1,
             weight: 1.0,
             skip: PHOTON_SKIP,
-            // Photons start inside whatever holds their light, as camera rays start inside
-            // what holds the camera (glassthing's glass stands in a closed room).
-            interiors: super::interiors_at(self.scene, ray.origin),
+            interiors: start,
             wavelength: None,
             bounces: 0,
         };
