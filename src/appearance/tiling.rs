@@ -136,19 +136,47 @@ fn locate(t: &Tiling, q: DVec2) -> Option<Found<'_>> {
     let u = (q.perp_dot(b) / det).floor();
     let v = (a.perp_dot(q) / det).floor();
     // The cell's polygons may reach past the parallelogram spanned by a and b, so the
-    // point is looked for in the neighbouring cells' copies too.
-    for di in -2..=2 {
-        for dj in -2..=2 {
-            let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
-            for tile in t.tiles {
-                if let Some(depth) = depth_in(tile, t, local) {
-                    return Some(Found { tile, local, depth });
-                }
+    // point is looked for in the neighbouring cells' copies too, nearest cells first.
+    for (di, dj) in NEIGHBOURS {
+        let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
+        for tile in t.tiles {
+            if let Some(depth) = depth_in(tile, t, local) {
+                return Some(Found { tile, local, depth });
             }
         }
     }
     None
 }
+
+/// The 5 x 5 cells round a point's own, ring by ring: tiles do not overlap, so the order
+/// only decides how soon the tile is found (most points lie in their own cell's copy).
+const NEIGHBOURS: [(i8, i8); 25] = [
+    (0, 0),
+    (-1, 0),
+    (1, 0),
+    (0, -1),
+    (0, 1),
+    (-1, -1),
+    (-1, 1),
+    (1, -1),
+    (1, 1),
+    (-2, 0),
+    (2, 0),
+    (0, -2),
+    (0, 2),
+    (-2, -1),
+    (-2, 1),
+    (2, -1),
+    (2, 1),
+    (-1, -2),
+    (1, -2),
+    (-1, 2),
+    (1, 2),
+    (-2, -2),
+    (-2, 2),
+    (2, -2),
+    (2, 2),
+];
 
 /// When `q` lies inside the tile, its distance to the tile's boundary in bevel widths (each
 /// edge's own width where the tile has them).
