@@ -170,16 +170,13 @@ fn beams_from(
 /// photon carries its light over this sum (the balance heuristic), so that light reaching a
 /// target through several beams is counted once, not once per beam.
 fn overlap_density(beams: &[Option<Beam>], own: usize, ray: &Ray, n: u32) -> f64 {
-    let own_beam = beams[own].expect("the photon's own beam");
     let others: f64 = (beams.iter().enumerate())
         .filter(|&(i, _)| i != own)
         .filter_map(|(_, b)| b.as_ref().map(|b| b.density(ray, n)))
         .sum();
-    // The photon's own beam counts whatever rounding says at its cone's edge.
-    let own_density = own_beam
-        .density(ray, n)
-        .max(f64::from(n) / own_beam.measure());
-    own_density + others
+    // The photon lies in its own beam by construction, whatever rounding says at the edge.
+    let own_beam = beams[own].expect("the photon's own beam");
+    f64::from(n) / own_beam.measure() + others
 }
 
 impl Integrator<'_> {
