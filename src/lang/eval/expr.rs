@@ -43,11 +43,63 @@ impl Level {
 impl Evaluator<'_> {
     /// A full expression of any type.
     pub(super) fn expr(&mut self) -> R<(Value, Span)> {
+        if let Some(operand) = self.lone_operand() {
+            return Ok(operand);
+        }
         let start = self.peek()?.span;
         self.enter(start)?;
         let r = self.ternary();
         self.leave();
         r
+    }
+
+    /// A lone operand: a [`plain_operand`](Self::plain_operand) followed by what cannot
+    /// continue an expression (`,`, `;`, `:`, a closing bracket, `>` inside a vector, a
+    /// name). Anything else (an operator next, a directive, a frame's end) takes the full
+    /// descent.
+    fn lone_operand(&mut self) -> Option<(Value, Span)> {
+        let ends = match self.raw_peek(1)?.kind {
+            TokenKind::Punct(
+                Punct::Comma
+                | Punct::Semi
+                | Punct::Colon
+                | Punct::RParen
+                | Punct::RBrace
+                | Punct::RBracket,
+            )
+            | TokenKind::Ident(_) => true,
+            TokenKind::Punct(Punct::Gt) => self.in_vector,
+            _ => false,
+        };
+        if ends { self.plain_operand() } else { None }
+    }
+
+    /// A number, or a name (not a keyword) holding a float, with no `.x`, `[i]` or `(`
+    /// after it: most operands of a loop's arithmetic. Read without the descent through
+    /// unary, postfix and primary, whose by-value copies of tokens and values are most of
+    /// what evaluating such an operand costs (measured on issue 16's loop: 1.58 -> 1.30 s
+    /// for numbers alone).
+    fn plain_operand(&mut self) -> Option<(Value, Span)> {
+        let tok = *self.raw_peek(0)?;
+        let after = self.raw_peek(1)?;
+        if [Punct::Dot, Punct::LBracket, Punct::LParen]
+            .iter()
+            .any(|&p| after.is_punct(p))
+        {
+            return None;
+        }
+        let value = match tok.kind {
+            TokenKind::Number(n) => n,
+            TokenKind::Ident(name) if !super::keywords::is_keyword(name) => {
+                match self.lookup(name)? {
+                    Value::Float(f) => *f,
+                    _ => return None,
+                }
+            }
+            _ => return None,
+        };
+        self.advance();
+        Some((Value::Float(value), tok.span))
     }
 
     pub(super) fn float(&mut self) -> R<f64> {
@@ -139,7 +191,10 @@ impl Evaluator<'_> {
     /// The binary operators from `level` up, by precedence climbing: one look at the next
     /// token per operand, where a function per level would look once per level.
     fn binary(&mut self, level: Level) -> R<(Value, Span)> {
-        let (mut a, mut span) = self.unary()?;
+        let (mut a, mut span) = match self.plain_operand() {
+            Some(operand) => operand,
+            None => self.unary()?,
+        };
         loop {
             let tok = self.peek_operator()?;
             let TokenKind::Punct(p) = tok.kind else {
@@ -341,7 +396,10 @@ impl Evaluator<'_> {
         let mut c = [0.0; 5];
         let mut len = 0u8;
         loop {
-            let (v, span) = self.ternary()?;
+            let (v, span) = match self.lone_operand() {
+                Some(operand) => operand,
+                None => self.ternary()?,
+            };
             if len >= 5 {
                 return Err(self.err(span, "a vector has at most 5 components"));
             }
