@@ -282,7 +282,7 @@ fn text_lines(rays: usize) -> Vec<String> {
             out.push(format!("{name:>9} skipped: timrom.ttf is not installed"));
             continue;
         };
-        let figures = trace(&world, rays);
+        let figures = trace(&world, rays, RayOrder::Random);
         out.push(format!(
             "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   (\"Penumbra\" in timrom.ttf{})",
             figures.camera_rate,
@@ -363,7 +363,7 @@ fn triangle_lines(options: &BenchOptions, line: &mut impl FnMut(String)) {
         ("hfield", height_field_world(512)),
     ];
     for (name, (world, triangles)) in shapes {
-        let figures = trace(&world, options.rays);
+        let figures = trace(&world, options.rays, RayOrder::Random);
         line(format!(
             "{name:>9} {:>12.0} {:>12.0} {:>8.1}%   ({triangles} triangles, {:.1} bytes per triangle)",
             figures.camera_rate,
@@ -408,19 +408,51 @@ struct RayFigures {
     hit_fraction: f64,
 }
 
+/// The order rays are traced in: as a camera traces them, or scattered.
+#[derive(Clone, Copy, PartialEq)]
+enum RayOrder {
+    /// A square image's pixels tile by tile (16 x 16), one jittered ray each: the order
+    /// penumbra's render traces camera rays in, where neighbouring rays meet the same
+    /// nodes and objects and find them in the cache.
+    Tiles,
+    /// Every ray in a random direction: no ray shares the previous one's path, as for the
+    /// scattered rays of diffuse bounces (the cache helps least).
+    Random,
+}
+
+/// Directions from the pinhole through the view square [-1.2, 1.2]^2 at distance 3.
+fn ray_directions(rays: usize, order: RayOrder) -> Vec<DVec3> {
+    const TILE: usize = 16;
+    let mut rng = Xorshift(0x9E37_79B9_7F4A_7C15);
+    let through = |s: f64, t: f64| DVec3::new(s * 1.2, t * 1.2, 3.0).normalize();
+    if order == RayOrder::Random {
+        return (0..rays)
+            .map(|_| through(rng.next() * 2.0 - 1.0, rng.next() * 2.0 - 1.0))
+            .collect();
+    }
+    let side = ((rays as f64).sqrt().ceil() as usize).max(1);
+    let tiles = side.div_ceil(TILE);
+    let mut dirs = Vec::with_capacity(side * side);
+    for tile in 0..tiles * tiles {
+        let (tx, ty) = (tile % tiles * TILE, tile / tiles * TILE);
+        for y in ty..(ty + TILE).min(side) {
+            for x in tx..(tx + TILE).min(side) {
+                let s = (x as f64 + rng.next()) / side as f64 * 2.0 - 1.0;
+                let t = (y as f64 + rng.next()) / side as f64 * 2.0 - 1.0;
+                dirs.push(through(s, t));
+            }
+        }
+    }
+    dirs.truncate(rays);
+    dirs
+}
+
 /// Camera rays from a pinhole in front of the cube, then shadow rays from their hits to a
-/// point light, all on the current thread.
-fn trace(world: &World, rays: usize) -> RayFigures {
+/// point light (in the same order), all on the current thread.
+fn trace(world: &World, rays: usize, order: RayOrder) -> RayFigures {
     let eye = DVec3::new(0.0, 0.0, -4.0);
     let light = DVec3::new(3.0, 5.0, -4.0);
-    let mut rng = Xorshift(0x9E37_79B9_7F4A_7C15);
-    let dirs: Vec<DVec3> = (0..rays)
-        .map(|_| {
-            let s = rng.next() * 2.0 - 1.0;
-            let t = rng.next() * 2.0 - 1.0;
-            (DVec3::new(s * 1.2, t * 1.2, 3.0) - DVec3::ZERO).normalize()
-        })
-        .collect();
+    let dirs = ray_directions(rays, order);
     let start = Instant::now();
     let mut points = Vec::with_capacity(rays);
     for &d in &dirs {
@@ -480,7 +512,7 @@ pub fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
         "poly",
         "julia",
     ] {
-        let figures = trace(&shape_world(name), rays);
+        let figures = trace(&shape_world(name), rays, RayOrder::Random);
         line(format!(
             "{name:>10} {:>12.0} {:>12.0} {:>8.1}%",
             figures.camera_rate,
@@ -502,9 +534,23 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
         "penumbra bench: {} rays of each kind per scene on one thread; BVH built on {threads} threads",
         options.rays
     ));
+    line(
+        "camera and shadow rays per second: rays in tile order as a render traces them, and \
+         rays in random directions (no coherence: every ray's nodes are new to the cache)"
+            .to_string(),
+    );
     line(format!(
-        "{:>9} {:>12} {:>12} {:>9} {:>12} {:>12} {:>10} {:>9}",
-        "spheres", "camera/s", "shadow/s", "hit", "build (s)", "seq. (s)", "bytes/obj", "depth"
+        "{:>9} {:>12} {:>12} {:>12} {:>12} {:>9} {:>12} {:>12} {:>10} {:>9}",
+        "spheres",
+        "camera/s",
+        "shadow/s",
+        "random/s",
+        "r.shadow/s",
+        "hit",
+        "build (s)",
+        "seq. (s)",
+        "bytes/obj",
+        "depth"
     ));
     let mut per_ray = Vec::new();
     for &n in &options.counts {
@@ -524,14 +570,17 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
             std::hint::black_box(crate::geometry::Bvh::build(&bounds));
             (seq, start.elapsed().as_secs_f64())
         };
-        let figures = trace(&world, options.rays);
+        let figures = trace(&world, options.rays, RayOrder::Tiles);
+        let random = trace(&world, options.rays, RayOrder::Random);
         let bytes = world.memory_bytes() as f64 / n as f64;
-        per_ray.push((n, 1.0 / figures.camera_rate, 1.0 / figures.shadow_rate));
+        per_ray.push((n, 1.0 / random.camera_rate, 1.0 / random.shadow_rate));
         line(format!(
-            "{n:>9} {:>12.0} {:>12.0} {:>8.1}% {build:>12.4} {:>12.4} {bytes:>10.1} {:>9}",
+            "{n:>9} {:>12.0} {:>12.0} {:>12.0} {:>12.0} {:>8.1}% {build:>12.4} {:>12.4} {bytes:>10.1} {:>9}",
             figures.camera_rate,
             figures.shadow_rate,
-            100.0 * figures.hit_fraction,
+            random.camera_rate,
+            random.shadow_rate,
+            100.0 * random.hit_fraction,
             seq.0,
             world.bvh_depth(),
         ));
@@ -546,7 +595,7 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
         && last.0 > first.0
     {
         line(format!(
-            "time per ray, {} -> {} spheres: camera x{:.2}, shadow x{:.2} (target: at most x3)",
+            "time per random ray, {} -> {} spheres: camera x{:.2}, shadow x{:.2} (target: at most x3)",
             first.0,
             last.0,
             last.1 / first.1,
