@@ -1,4 +1,4 @@
-// tiling 13 to 24 and 27 (Penrose's rhombs, round the origin at the front left): each on
+// tiling 13 to 24, 25 and 27 (Penrose's pentagons and rhombs, at the front): each on
 // a square slab, with a colour map that gives every tile type its own colour and a light
 // caulk at the bevelled edges (POV-Ray's type t owns the values t/N to (t+1)/N); every
 // other slab also takes the pattern as its normal
@@ -48,3 +48,4 @@ Slab(22, 3, -1, -1, true)
 Slab(23, 3, 1, -1, false)
 Slab(24, 5, 3, -1, true)
 Slab(27, 2, -3, -3, false)
+Slab(25, 6, -1, -3, true)

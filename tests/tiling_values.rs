@@ -85,11 +85,14 @@ fn worst_differences(patterns: &[String]) -> Option<Vec<(String, f64)>> {
     Some(worst)
 }
 
+/// All 27 tilings, and the aperiodic ones (Penrose's pentagons, kites and darts, rhombs)
+/// also ten times further out (up to 75 from the origin), where their construction starts
+/// from a larger tile.
 #[test]
-fn every_tiling_but_penroses_first_gives_povrays_values() {
-    let patterns: Vec<String> = (1..=24)
-        .chain([26, 27])
+fn every_tiling_gives_povrays_values() {
+    let patterns: Vec<String> = (1..=27)
         .map(|n| format!("tiling {n}"))
+        .chain((25..=27).map(|n| format!("tiling {n} scale 0.1")))
         .collect();
     let Some(worst) = worst_differences(&patterns) else {
         return;

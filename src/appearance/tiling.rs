@@ -14,6 +14,7 @@ use glam::{DVec2, DVec3};
 mod corners;
 mod pavements;
 mod penrose;
+mod pentagons;
 mod table;
 use pavements::PAVEMENTS;
 use table::TILINGS;
@@ -53,11 +54,18 @@ pub fn supported(n: u8) -> bool {
     table(n).is_some() || aperiodic(n).is_some()
 }
 
-/// The aperiodic tilings modelled (src/appearance/tiling/penrose.rs).
-fn aperiodic(n: u8) -> Option<penrose::Penrose> {
+/// The aperiodic tilings: Penrose's first (src/appearance/tiling/pentagons.rs), and his
+/// kites and darts and rhombs (src/appearance/tiling/penrose.rs).
+enum Aperiodic {
+    Pentagons,
+    Halves(penrose::Penrose),
+}
+
+fn aperiodic(n: u8) -> Option<Aperiodic> {
     match n {
-        26 => Some(penrose::Penrose::KitesAndDarts),
-        27 => Some(penrose::Penrose::Rhombs),
+        25 => Some(Aperiodic::Pentagons),
+        26 => Some(Aperiodic::Halves(penrose::Penrose::KitesAndDarts)),
+        27 => Some(Aperiodic::Halves(penrose::Penrose::Rhombs)),
         _ => None,
     }
 }
@@ -101,8 +109,11 @@ pub fn pavement_value(v: &crate::scene::Pavement, p: DVec3) -> f64 {
 
 /// The pattern value of `tiling n` at a point (its y is ignored).
 pub fn tiling_value(n: u8, p: DVec3) -> f64 {
-    if let Some(tiling) = aperiodic(n) {
-        return penrose::penrose_value(tiling, DVec2::new(p.x, p.z));
+    let flat = DVec2::new(p.x, p.z);
+    match aperiodic(n) {
+        Some(Aperiodic::Pentagons) => return pentagons::pentagons_value(flat),
+        Some(Aperiodic::Halves(tiling)) => return penrose::penrose_value(tiling, flat),
+        None => {}
     }
     table(n).map_or(0.0, |t| bevelled(t, p))
 }
