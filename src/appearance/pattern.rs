@@ -10,22 +10,29 @@ use super::noise::{dturbulence, lattice_hash, noise_with, turbulence};
 use crate::scene::{Pattern, PatternKind, Quilted, Turbulence, Warp, Wave};
 
 /// The ten wave sources of `ripples` and `waves` (unit vectors) and each source's wave
-/// frequency for `waves`, measured from povray renders of the two patterns on nine planes
-/// (z = -2 .. 2): a least-squares fit of `0.5 + 0.05 sum sin(2 pi |p - s|)` (ripples) and
-/// `0.5 + 0.02 sum sin(2 pi f |p - s|) / f` (waves) leaves 1.1e-4 RMS, the half-float
-/// precision of the renders. POV-Ray derives them from its noise tables, which penumbra
-/// does not have, so they are kept as measured.
+/// frequency for `waves`, measured from povray renders: first a least-squares fit of
+/// `0.5 + 0.05 sum sin(2 pi |p - s|)` (ripples) and `0.5 + 0.02 sum sin(2 pi f |p - s|) / f`
+/// (waves) to the patterns on nine planes (1.1e-4 RMS, 5 digits), then refined through the
+/// normals' phases: a mirror under `ripples translate T scale F frequency F` shows each
+/// source as a plane wave whose phase is F |T + s| (mod 1), fitted from POV-Ray's image at
+/// F = 10^3, 10^4, 10^5 and 10^6 in turn (each fixing the next one's whole cycles), for T = 0
+/// and half a unit along each axis; the distances give the components (and |s| = 1 to
+/// 1e-8), `waves` at T = 0 gives f |s|. The three distances and the norm agree to 8e-8.
+/// POV-Ray derives them from its noise tables, which penumbra does not have, so they are
+/// kept as measured. The digits matter where a scene scales the pattern up and its
+/// frequency by as much (textures/finishes/var_refl.pov: `scale 100000 frequency 100000`),
+/// which multiplies the error in a source's distance into the wave's phase.
 pub(crate) const WAVE_SOURCES: [([f64; 3], f64); 10] = [
-    ([0.24620, -0.91455, -0.32090], 0.99143),
-    ([-0.52041, -0.38652, -0.76143], 0.40067),
-    ([-0.44456, 0.62333, 0.64329], 0.43316),
-    ([0.56489, 0.72204, -0.39944], 0.16851),
-    ([0.49658, 0.66895, 0.55310], 0.70930),
-    ([0.13793, -0.70462, -0.69605], 0.22967),
-    ([-0.55248, -0.24643, -0.79627], 0.96004),
-    ([-0.66612, -0.59189, -0.45382], 0.78299),
-    ([-0.06436, -0.80600, -0.58841], 0.68920),
-    ([-0.60438, 0.49205, -0.62659], 0.91911),
+    ([0.246190210, -0.914556759, -0.320899167], 0.991444768),
+    ([-0.520489130, -0.386027152, -0.761625897], 0.400667436),
+    ([-0.444551091, 0.623328980, 0.643300323], 0.433169652),
+    ([0.564896733, 0.722040511, -0.399436075], 0.168513138),
+    ([0.496586055, 0.668948173, 0.553091873], 0.709301133),
+    ([0.137949445, -0.704642103, -0.696024039], 0.229672231),
+    ([-0.552573186, -0.246075340, -0.796310200], 0.960041212),
+    ([-0.666088953, -0.591878567, -0.453878056], 0.782972810),
+    ([-0.064371810, -0.805951585, -0.588471174], 0.689189427),
+    ([-0.604378218, 0.492048394, -0.626590240], 0.919115881),
 ];
 
 /// The wrap POV-Ray uses after frequency and phase: slightly more than one, so that a
