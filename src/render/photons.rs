@@ -102,8 +102,12 @@ impl PhotonMap {
 
     /// The irradiance the photons bring to `p` on a surface facing `n` (photons that
     /// arrive from behind it are not counted): their power within the radius over the
-    /// disc's area.
-    pub fn irradiance(&self, p: DVec3, n: DVec3) -> DVec3 {
+    /// disc's area. A finish's `brilliance` b weighs each photon by cos^(b - 1), its
+    /// incidence cosine: POV-Ray shades a photon as a light from its direction, whose
+    /// diffuse term is cos^b, while the power per area already holds one cosine (measured:
+    /// a floor of brilliance 0.6 under a glass box lit at 18 degrees of elevation sums
+    /// to 795.4 in POV-Ray's image, 776.2 without the weight).
+    pub fn irradiance(&self, p: DVec3, n: DVec3, brilliance: f64) -> DVec3 {
         if self.photons.is_empty() {
             return DVec3::ZERO;
         }
@@ -133,8 +137,14 @@ impl PhotonMap {
             for photon in &self.photons[range] {
                 let q = glam::Vec3::from_array(photon.position);
                 let d = glam::Vec3::from_array(photon.direction);
-                if (q - pf).length_squared() < r2 && d.dot(nf) < 0.0 {
-                    sum += glam::Vec3::from_array(photon.power);
+                let cos = -d.dot(nf);
+                if (q - pf).length_squared() < r2 && cos > 0.0 {
+                    let power = glam::Vec3::from_array(photon.power);
+                    sum += if brilliance == 1.0 {
+                        power
+                    } else {
+                        power * cos.powf(brilliance as f32 - 1.0)
+                    };
                 }
             }
         }
@@ -220,6 +230,19 @@ mod tests {
         Photon::new(p, DVec3::splat(power), -DVec3::Y)
     }
 
+    /// Brilliance b weighs a photon by cos^(b - 1): one arriving at 60 degrees from the
+    /// normal counts 0.5^-0.4 = 1.32 times at b = 0.6 and 0.5 times at b = 2.
+    #[test]
+    fn brilliance_weighs_photons_by_their_incidence() {
+        let slanted = DVec3::new(3f64.sqrt() / 2.0, -0.5, 0.0);
+        let map = PhotonMap::new(vec![Photon::new(DVec3::ZERO, DVec3::ONE, slanted)], 0.5);
+        let plain = map.irradiance(DVec3::ZERO, DVec3::Y, 1.0).x;
+        for (b, factor) in [(0.6, 0.5f64.powf(-0.4)), (2.0, 0.5)] {
+            let e = map.irradiance(DVec3::ZERO, DVec3::Y, b).x;
+            assert!((e / plain - factor).abs() < 1e-5, "{b}: {}", e / plain);
+        }
+    }
+
     #[test]
     fn the_gather_counts_photons_inside_the_radius_from_the_front() {
         let photons = vec![
@@ -231,7 +254,7 @@ mod tests {
             Photon::new(DVec3::ZERO, DVec3::splat(8.0), DVec3::Y),
         ];
         let map = PhotonMap::new(photons, 0.5);
-        let e = map.irradiance(DVec3::ZERO, DVec3::Y);
+        let e = map.irradiance(DVec3::ZERO, DVec3::Y, 1.0);
         let area = std::f64::consts::PI * 0.25;
         assert!((e.x - 3.0 / area).abs() < 1e-6, "{e}");
     }
@@ -251,7 +274,7 @@ mod tests {
                 })
                 .collect();
             let map = PhotonMap::new(photons, 0.5);
-            let e = map.irradiance(centre, DVec3::Y) * std::f64::consts::PI * 0.25;
+            let e = map.irradiance(centre, DVec3::Y, 1.0) * std::f64::consts::PI * 0.25;
             assert!((e.x - 64.0).abs() < 1e-3, "{centre}: {e}");
         }
     }

@@ -377,7 +377,8 @@ impl<'a> Integrator<'a> {
     /// The surface's own colour, layer by layer, then what it reflects and transmits.
     fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
         let layers = self.layers(s);
-        let caustic = self.caustic(s, sampler.index());
+        // The photons' light, gathered once per brilliance among the layers.
+        let mut caustic: Option<(f64, DVec3)> = None;
         let mut colour = DVec3::ZERO;
         // Layers composite top first: each lets through what its own opacity does not cover.
         let mut through = DVec3::ONE;
@@ -396,8 +397,14 @@ impl<'a> Integrator<'a> {
                 att: c.opacity(self.scene.legacy),
             };
             colour += through * self.surface_light(s, &shaded, sampler, counts);
-            if caustic != DVec3::ZERO {
-                colour += through * shaded.caustic(caustic);
+            if self.photons.is_some() {
+                let b = layer.finish.brilliance;
+                let e = match caustic {
+                    Some((cb, e)) if cb == b => e,
+                    _ => self.caustic(s, sampler.index(), b),
+                };
+                caustic = Some((b, e));
+                colour += through * shaded.caustic(e);
             }
             diffuse += through * shaded.radiosity_albedo();
             top.get_or_insert((c, layer.finish));

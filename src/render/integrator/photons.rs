@@ -320,11 +320,11 @@ impl Integrator<'_> {
     }
 
     /// What this sample's photon pass brings to the shaded point (irradiance).
-    pub(super) fn caustic(&self, s: &Shading, index: u32) -> DVec3 {
+    pub(super) fn caustic(&self, s: &Shading, index: u32, brilliance: f64) -> DVec3 {
         let Some(map) = self.photons.and_then(|m| m.pass(index)) else {
             return DVec3::ZERO;
         };
-        map.irradiance(s.surface.point, s.facing)
+        map.irradiance(s.surface.point, s.facing, brilliance)
     }
 
     /// The top layer's pigment and finish and what the layers let through, as `shade`
