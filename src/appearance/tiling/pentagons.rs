@@ -193,7 +193,7 @@ const STAR: &[Child] = &[
 
 /// How far a tile's children reach beyond it, per edge of the tile: half the long diagonal
 /// of a diamond one level down (the furthest any child reaches).
-const CHILD_REACH: f64 = 0.951_056_516_295_153_5 / (PHI * PHI);
+const CHILD_REACH: f64 = TURN[2].y / (PHI * PHI);
 
 /// A tile: its kind, centre and axis (from the centre to the axis corner).
 #[derive(Clone, Copy, Debug)]
