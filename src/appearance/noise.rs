@@ -170,7 +170,7 @@ fn value_gradient_noise_seeded(p: DVec3, seed: u32) -> f64 {
             + unit(hash(h ^ 0xb529_7a4d)) * d.x
             + unit(hash(h ^ 0x1b56_c4e9)) * d.y
             + unit(hash(h ^ 0x7f4a_7c15)) * d.z;
-        sum += w[dx as usize].x * w[dy as usize].y * w[dz as usize].z * value;
+        sum += w[dx].x * w[dy].y * w[dz].z * value;
     }
     sum
 }
