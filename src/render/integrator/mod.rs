@@ -377,7 +377,8 @@ impl<'a> Integrator<'a> {
     /// The surface's own colour, layer by layer, then what it reflects and transmits.
     fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
         let layers = self.layers(s);
-        // The photons' light, gathered once per brilliance among the layers.
+        // The photons' light, gathered once per brilliance among the layers that show it
+        // (a diffuse of zero, as glass has, shows none).
         let mut caustic: Option<(f64, DVec3)> = None;
         let mut colour = DVec3::ZERO;
         // Layers composite top first: each lets through what its own opacity does not cover.
@@ -397,7 +398,7 @@ impl<'a> Integrator<'a> {
                 att: c.opacity(self.scene.legacy),
             };
             colour += through * self.surface_light(s, &shaded, sampler, counts);
-            if self.photons.is_some() {
+            if self.photons.is_some() && shaded.finish.diffuse * shaded.att != 0.0 {
                 let b = layer.finish.brilliance;
                 let e = match caustic {
                     Some((cb, e)) if cb == b => e,
