@@ -307,6 +307,9 @@ struct BenchArgs {
     /// Only the function line and the shape lines (rays per second against one shape).
     #[arg(long)]
     shapes: bool,
+    /// Only the ray-rate table over clouds of spheres (`--counts`, `--rays`).
+    #[arg(long)]
+    spheres: bool,
     /// Only the whole-pipeline section (`--povray-counts`, `--width`, `--height`): the N x N
     /// spheres scene rendered by penumbra and by POV-Ray, time and peak memory of each.
     #[arg(long)]
@@ -812,6 +815,12 @@ fn compare(args: CompareArgs) -> Result<ExitCode, String> {
 fn bench(args: BenchArgs) -> Result<ExitCode, String> {
     if args.parse {
         penumbra::study::parse_bench::run(&args.parse_counts, args.parse_repeats, |line| {
+            println!("{line}");
+        });
+        return Ok(ExitCode::SUCCESS);
+    }
+    if args.spheres {
+        penumbra::study::bench::sphere_table(&args.counts, args.rays, &mut |line| {
             println!("{line}");
         });
         return Ok(ExitCode::SUCCESS);

@@ -193,6 +193,11 @@ pub struct World {
     csg: Vec<CsgNode>,
     bvh: Bvh,
     unbounded: Vec<u32>,
+    /// Each top-level item's place in the scene's order, sorted by item: of two bounded
+    /// surfaces met at the same distance, the one declared first is seen (as POV-Ray shows
+    /// advanced/pawns' rosewood squares, not the pine block whose top they share), whatever
+    /// the tree's shape. Read only on such ties.
+    declared: Vec<(u32, u32)>,
     /// The bounds of the objects photons are shot at (`photons { target }`).
     photon_targets: Vec<Aabb>,
     instances: Vec<Instance>,
@@ -271,6 +276,7 @@ impl WorldBuilder {
             csg: self.csg,
             bvh: Bvh::default(),
             unbounded: Vec::new(),
+            declared: (0..).zip(&self.top).map(|(k, i)| (i.0, k)).collect(),
             photon_targets: Vec::new(),
             instances: self.instances,
         };
@@ -448,6 +454,8 @@ impl World {
         };
         self.bvh.items.iter_mut().for_each(remap);
         self.unbounded.iter_mut().for_each(remap);
+        self.declared.iter_mut().for_each(|(item, _)| remap(item));
+        self.declared.sort_unstable();
         for node in &mut self.csg {
             node.children.iter_mut().for_each(remap);
         }
@@ -646,7 +654,7 @@ impl World {
             Some(index) => {
                 (0..index.first).for_each(|i| visit(i, f));
                 index.unbounded.iter().for_each(|&j| visit(j as usize, f));
-                index.bvh.traverse(ray, t_max, |j, t| {
+                index.bvh.traverse_any(ray, t_max, |j, t| {
                     visit(j as usize, f);
                     Some(t)
                 });
@@ -824,14 +832,36 @@ impl World {
         } else {
             t_best
         };
+        let mut nearest: Option<u32> = None;
         self.bvh.traverse(ray, t_bounded, |i, t_cur| {
-            if let Some(hit) = self.item_hit(i, ray, t_cur, skip) {
-                best = Some(hit);
-                return Some(hit.t);
+            // Once a bounded item is met, one at the very same distance is a tie, settled
+            // by the scene's order rather than by the order the tree visits them.
+            let reach = if nearest.is_some() {
+                t_cur.next_up()
+            } else {
+                t_cur
+            };
+            match self.item_hit(i, ray, reach, skip) {
+                Some(hit)
+                    if hit.t < t_cur || nearest.is_some_and(|n| self.declared_before(i, n)) =>
+                {
+                    best = Some(hit);
+                    nearest = Some(i);
+                    Some(hit.t)
+                }
+                _ => Some(t_cur),
             }
-            Some(t_cur)
         });
         best
+    }
+
+    /// Whether top-level item `a` comes before `b` in the scene.
+    fn declared_before(&self, a: u32, b: u32) -> bool {
+        let place = |item: u32| {
+            let k = self.declared.binary_search_by_key(&item, |&(i, _)| i);
+            k.map_or(u32::MAX, |k| self.declared[k].1)
+        };
+        place(a) < place(b)
     }
 
     /// Whether anything that casts shadows lies on the ray within (0, t_max); stops at the
@@ -845,7 +875,7 @@ impl World {
             return true;
         }
         let mut hit = false;
-        self.bvh.traverse(ray, t_max, |i, t_cur| {
+        self.bvh.traverse_any(ray, t_max, |i, t_cur| {
             if self.item_blocks(i, ray, t_cur) {
                 hit = true;
                 return None;
@@ -896,7 +926,7 @@ impl World {
                 return false;
             }
         }
-        self.bvh.traverse(
+        self.bvh.traverse_any(
             ray,
             t_max,
             |i, t_cur| if each(i) { Some(t_cur) } else { None },
@@ -1067,10 +1097,7 @@ impl World {
     }
 
     pub fn bounds(&self) -> Aabb {
-        self.bvh
-            .nodes
-            .first()
-            .map_or(Aabb::EMPTY, |n| n.bounds.aabb())
+        self.bvh.bounds()
     }
 }
 
@@ -1325,5 +1352,51 @@ mod tests {
             hits > 5_000,
             "{hits} hits: the test would not see a difference"
         );
+    }
+
+    /// Boxes sharing their top face (advanced/pawns' 32 squares set into the board): rays
+    /// from above see the one declared first, whichever order the squares and the board are
+    /// declared in, wherever the tree puts them.
+    #[test]
+    fn the_first_declared_of_two_coincident_faces_is_seen() {
+        let board = (DVec3::new(-8.0, -0.5, -8.0), DVec3::new(8.0, 0.0, 8.0));
+        let squares: Vec<(DVec3, DVec3)> = (0..64)
+            .filter(|k| (k % 8 + k / 8) % 2 == 0)
+            .map(|k| {
+                let (x, z) = (f64::from(k % 8) * 2.0 - 8.0, f64::from(k / 8) * 2.0 - 8.0);
+                (DVec3::new(x, -2.0, z), DVec3::new(x + 2.0, 0.0, z + 2.0))
+            })
+            .collect();
+        for board_first in [false, true] {
+            let mut b = WorldBuilder::default();
+            let add = |b: &mut WorldBuilder, (min, max): (DVec3, DVec3)| {
+                let item = b.primitive(ShapeKind::Box { min, max }, &Transform::IDENTITY, 0, 0);
+                b.add_top(item);
+            };
+            if board_first {
+                add(&mut b, board);
+            }
+            squares.iter().for_each(|&s| add(&mut b, s));
+            if !board_first {
+                add(&mut b, board);
+            }
+            let w = b.build();
+            // The board, under the number the build gave it.
+            let rank = if board_first { 0 } else { squares.len() as u32 };
+            let board_item = w.declared.iter().find(|d| d.1 == rank).unwrap().0;
+            for i in 0..400 {
+                let (x, z) = (f64::from(i % 20) * 0.8 - 7.9, f64::from(i / 20) * 0.8 - 7.9);
+                let on_square = ((x + 8.0) as i32 / 2 + (z + 8.0) as i32 / 2) % 2 == 0;
+                let ray = Ray::new(DVec3::new(x, 5.0, z), -DVec3::Y);
+                let hit = w.intersect(&ray, f64::INFINITY, 0).unwrap();
+                assert_eq!(hit.t, 5.0);
+                let expect_board = board_first || !on_square;
+                assert_eq!(
+                    hit.primitive == board_item,
+                    expect_board,
+                    "board first: {board_first}, ray at {x}, {z}"
+                );
+            }
+        }
     }
 }

@@ -488,6 +488,79 @@ fn trace(world: &World, rays: usize, order: RayOrder) -> RayFigures {
     }
 }
 
+/// The ray-rate table: camera and shadow rays per second through clouds of `counts`
+/// spheres, in tile order and at random, with the tree's build time, bytes and depth.
+pub fn sphere_table(counts: &[usize], rays: usize, line: &mut impl FnMut(String)) {
+    line(
+        "camera and shadow rays per second: rays in tile order as a render traces them, and \
+         rays in random directions (no coherence: every ray's nodes are new to the cache)"
+            .to_string(),
+    );
+    line(format!(
+        "{:>9} {:>12} {:>12} {:>12} {:>12} {:>9} {:>12} {:>12} {:>10} {:>9}",
+        "spheres",
+        "camera/s",
+        "shadow/s",
+        "random/s",
+        "r.shadow/s",
+        "hit",
+        "build (s)",
+        "seq. (s)",
+        "bytes/obj",
+        "depth"
+    ));
+    let mut per_ray = Vec::new();
+    for &n in counts {
+        let (world, build) = sphere_world(n);
+        let seq = {
+            let mut rng = Xorshift(1);
+            let bounds: Vec<crate::geometry::Aabb> = (0..n)
+                .map(|_| {
+                    let c = rng.vec3();
+                    crate::geometry::Aabb::new(c, c + DVec3::splat(0.01))
+                })
+                .collect();
+            let start = Instant::now();
+            std::hint::black_box(crate::geometry::Bvh::build_sequential(&bounds));
+            let seq = start.elapsed().as_secs_f64();
+            let start = Instant::now();
+            std::hint::black_box(crate::geometry::Bvh::build(&bounds));
+            (seq, start.elapsed().as_secs_f64())
+        };
+        let figures = trace(&world, rays, RayOrder::Tiles);
+        let random = trace(&world, rays, RayOrder::Random);
+        let bytes = world.memory_bytes() as f64 / n as f64;
+        per_ray.push((n, 1.0 / random.camera_rate, 1.0 / random.shadow_rate));
+        line(format!(
+            "{n:>9} {:>12.0} {:>12.0} {:>12.0} {:>12.0} {:>8.1}% {build:>12.4} {:>12.4} {bytes:>10.1} {:>9}",
+            figures.camera_rate,
+            figures.shadow_rate,
+            random.camera_rate,
+            random.shadow_rate,
+            100.0 * random.hit_fraction,
+            seq.0,
+            world.bvh_depth(),
+        ));
+        line(format!(
+            "          (BVH alone over {n} boxes: sequential {:.4} s, parallel {:.4} s, speed-up {:.2}x)",
+            seq.0,
+            seq.1,
+            seq.0 / seq.1
+        ));
+    }
+    if let (Some(first), Some(last)) = (per_ray.first(), per_ray.last())
+        && last.0 > first.0
+    {
+        line(format!(
+            "time per random ray, {} -> {} spheres: camera x{:.2}, shadow x{:.2} (target: at most x3)",
+            first.0,
+            last.0,
+            last.1 / first.1,
+            last.2 / first.2
+        ));
+    }
+}
+
 /// The function line and a line per shape, beside one sphere.
 pub fn shape_lines(rays: usize, line: &mut impl FnMut(String)) {
     let (best, median) = function_rate();
@@ -534,74 +607,7 @@ pub fn run(options: &BenchOptions, mut log: impl FnMut(&str)) -> String {
         "penumbra bench: {} rays of each kind per scene on one thread; BVH built on {threads} threads",
         options.rays
     ));
-    line(
-        "camera and shadow rays per second: rays in tile order as a render traces them, and \
-         rays in random directions (no coherence: every ray's nodes are new to the cache)"
-            .to_string(),
-    );
-    line(format!(
-        "{:>9} {:>12} {:>12} {:>12} {:>12} {:>9} {:>12} {:>12} {:>10} {:>9}",
-        "spheres",
-        "camera/s",
-        "shadow/s",
-        "random/s",
-        "r.shadow/s",
-        "hit",
-        "build (s)",
-        "seq. (s)",
-        "bytes/obj",
-        "depth"
-    ));
-    let mut per_ray = Vec::new();
-    for &n in &options.counts {
-        let (world, build) = sphere_world(n);
-        let seq = {
-            let mut rng = Xorshift(1);
-            let bounds: Vec<crate::geometry::Aabb> = (0..n)
-                .map(|_| {
-                    let c = rng.vec3();
-                    crate::geometry::Aabb::new(c, c + DVec3::splat(0.01))
-                })
-                .collect();
-            let start = Instant::now();
-            std::hint::black_box(crate::geometry::Bvh::build_sequential(&bounds));
-            let seq = start.elapsed().as_secs_f64();
-            let start = Instant::now();
-            std::hint::black_box(crate::geometry::Bvh::build(&bounds));
-            (seq, start.elapsed().as_secs_f64())
-        };
-        let figures = trace(&world, options.rays, RayOrder::Tiles);
-        let random = trace(&world, options.rays, RayOrder::Random);
-        let bytes = world.memory_bytes() as f64 / n as f64;
-        per_ray.push((n, 1.0 / random.camera_rate, 1.0 / random.shadow_rate));
-        line(format!(
-            "{n:>9} {:>12.0} {:>12.0} {:>12.0} {:>12.0} {:>8.1}% {build:>12.4} {:>12.4} {bytes:>10.1} {:>9}",
-            figures.camera_rate,
-            figures.shadow_rate,
-            random.camera_rate,
-            random.shadow_rate,
-            100.0 * random.hit_fraction,
-            seq.0,
-            world.bvh_depth(),
-        ));
-        line(format!(
-            "          (BVH alone over {n} boxes: sequential {:.4} s, parallel {:.4} s, speed-up {:.2}x)",
-            seq.0,
-            seq.1,
-            seq.0 / seq.1
-        ));
-    }
-    if let (Some(first), Some(last)) = (per_ray.first(), per_ray.last())
-        && last.0 > first.0
-    {
-        line(format!(
-            "time per random ray, {} -> {} spheres: camera x{:.2}, shadow x{:.2} (target: at most x3)",
-            first.0,
-            last.0,
-            last.1 / first.1,
-            last.2 / first.2
-        ));
-    }
+    sphere_table(&options.counts, options.rays, &mut line);
     shape_lines(options.rays, &mut line);
     text_lines(options.rays).into_iter().for_each(&mut line);
     triangle_lines(options, &mut line);

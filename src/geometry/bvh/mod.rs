@@ -1,6 +1,6 @@
-//! A bounding volume hierarchy: binned SAH build, flattened depth-first so the left child
-//! of node i is node i + 1, traversed front to back with a fixed-size stack (no allocation
-//! per ray).
+//! A bounding volume hierarchy: a binary tree built by binned SAH, then gathered into
+//! nodes of four children tested side by side (`wide`), traversed front to back with a
+//! fixed-size stack (no allocation per ray).
 
 use glam::{DVec3, Vec3};
 
@@ -8,7 +8,10 @@ use std::cell::Cell;
 
 use rayon::prelude::*;
 
-use super::{Aabb, Ray};
+use super::Aabb;
+
+mod wide;
+pub use wide::Node;
 
 /// Subtrees with fewer items than this on either side are built on the current thread.
 const PARALLEL_MIN_ITEMS: usize = 4096;
@@ -45,24 +48,34 @@ const BINS: usize = 12;
 const MAX_LEAF: usize = 4;
 /// Past this depth the build splits at the median, so traversal's fixed stack suffices.
 const SAH_DEPTH_LIMIT: usize = 40;
-pub const STACK_SIZE: usize = 64;
 
+/// A node of the binary tree the build makes, before [`wide::collapse`] gathers it into
+/// nodes of four.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Node {
-    pub bounds: NodeBox,
+struct BinaryNode {
+    bounds: NodeBox,
     /// Leaf: first item. Interior: index of the right child.
-    pub offset: u32,
+    offset: u32,
     /// Leaf: number of items (> 0). Interior: 0.
-    pub count: u16,
-    /// Interior: split axis, to visit the nearer child first.
-    pub axis: u16,
+    count: u16,
+}
+
+/// The binary tree while it is built: nodes depth first (the left child of node i is
+/// node i + 1) and the items in leaf order.
+#[derive(Default)]
+struct Binary {
+    nodes: Vec<BinaryNode>,
+    items: Vec<u32>,
 }
 
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Bvh {
+    /// Nodes of four children, depth first; the root is node 0.
     pub nodes: Vec<Node>,
     /// Item indices in leaf order.
     pub items: Vec<u32>,
+    /// The deepest leaf's depth in nodes, which sizes the traversal's stack.
+    depth: usize,
 }
 
 /// A box in single precision, rounded outward so it holds everything the double-precision
@@ -99,9 +112,11 @@ impl NodeBox {
     }
 }
 
-/// What the tree costs per item while it is built and after: the item, its index, and a
-/// node (leaves hold a few items; interior nodes about as many again).
-pub const BYTES_PER_ITEM: usize = size_of::<BuildItem>() + size_of::<u32>() + size_of::<Node>();
+/// What the tree costs per item while it is built and after: the item, its index, a
+/// binary node (leaves hold a few items; interior nodes about as many again) and the share
+/// of a node of four (one per three binary interior nodes, or fewer).
+pub const BYTES_PER_ITEM: usize =
+    size_of::<BuildItem>() + size_of::<u32>() + size_of::<BinaryNode>() + size_of::<Node>() / 3;
 
 /// An item while the tree is built: 40 bytes, so a million items take 40 MB of the
 /// build's peak memory. The centre only chooses splits, so single precision serves.
@@ -132,14 +147,15 @@ impl Bvh {
                 }
             })
             .collect();
-        let mut bvh = Bvh {
+        let mut tree = Binary {
             nodes: Vec::with_capacity(2 * items.len().max(1)),
             items: Vec::with_capacity(items.len()),
         };
         if !items.is_empty() {
-            bvh.build_node(&mut items, 0);
+            tree.build_node(&mut items, 0);
         }
-        bvh
+        drop(items);
+        wide::collapse(tree)
     }
 
     /// Builds the sequential way only (for tests and the benchmark's comparison).
@@ -149,27 +165,11 @@ impl Bvh {
         PARALLEL.with(|p| p.set(true));
         bvh
     }
+}
 
-    /// The deepest leaf's depth (0 for a single leaf or an empty tree).
-    pub fn depth(&self) -> usize {
-        let mut deepest = 0;
-        let mut stack = vec![(0usize, 0usize)];
-        while let Some((node, depth)) = stack.pop() {
-            let Some(n) = self.nodes.get(node) else {
-                continue;
-            };
-            if n.count > 0 {
-                deepest = deepest.max(depth);
-            } else {
-                stack.push((node + 1, depth + 1));
-                stack.push((n.offset as usize, depth + 1));
-            }
-        }
-        deepest
-    }
-
+impl Binary {
     /// Appends another tree (built over a later part of the item list), shifting its links.
-    fn append(&mut self, other: Bvh) {
+    fn append(&mut self, other: Binary) {
         let node_base = self.nodes.len() as u32;
         let item_base = self.items.len() as u32;
         self.nodes.extend(other.nodes.into_iter().map(|mut n| {
@@ -182,12 +182,11 @@ impl Bvh {
     fn build_node(&mut self, items: &mut [BuildItem], depth: usize) -> usize {
         let bounds = fold_bounds(items, |it| it.bounds.aabb());
         let node_index = self.nodes.len();
-        self.nodes.push(Node {
+        self.nodes.push(BinaryNode {
             // Exact: a union of boxes with single-precision corners.
             bounds: NodeBox::enclosing(&bounds),
             offset: 0,
             count: 0,
-            axis: 0,
         });
         if items.len() <= MAX_LEAF {
             self.make_leaf(node_index, items);
@@ -234,7 +233,7 @@ impl Bvh {
             // Both halves are large: build them side by side into their own arrays and
             // splice them in the order a sequential build would have written them.
             let sub = |part: &mut [BuildItem]| {
-                let mut t = Bvh {
+                let mut t = Binary {
                     nodes: Vec::with_capacity(2 * part.len()),
                     items: Vec::with_capacity(part.len()),
                 };
@@ -251,7 +250,6 @@ impl Bvh {
             self.build_node(right, depth + 1)
         };
         self.nodes[node_index].offset = right_index as u32;
-        self.nodes[node_index].axis = axis as u16;
         node_index
     }
 
@@ -343,93 +341,6 @@ impl Bvh {
             Some(SahDecision::Split(left))
         }
     }
-
-    /// Visits leaves whose boxes the ray enters before `t_max`, nearer child first. The
-    /// callback gets an item and the current `t_max`, and returns a new `t_max` (shrinking it
-    /// prunes farther boxes) or `None` to stop the traversal.
-    #[inline]
-    pub fn traverse(
-        &self,
-        ray: &Ray,
-        mut t_max: f64,
-        mut visit: impl FnMut(u32, f64) -> Option<f64>,
-    ) {
-        if self.nodes.is_empty() {
-            return;
-        }
-        let inv = ray.direction.recip();
-        let negative = [inv.x < 0.0, inv.y < 0.0, inv.z < 0.0];
-        let mut stack = [0u32; STACK_SIZE];
-        let mut top = 0usize;
-        let mut node = 0usize;
-        loop {
-            let n = &self.nodes[node];
-            if n.bounds.aabb().hit(ray, inv, t_max).is_some() {
-                if n.count > 0 {
-                    let start = n.offset as usize;
-                    for &item in &self.items[start..start + n.count as usize] {
-                        match visit(item, t_max) {
-                            Some(t) => t_max = t,
-                            None => return,
-                        }
-                    }
-                } else {
-                    let (near, far) = if negative[n.axis as usize] {
-                        (n.offset as usize, node + 1)
-                    } else {
-                        (node + 1, n.offset as usize)
-                    };
-                    stack[top] = far as u32;
-                    top += 1;
-                    node = near;
-                    continue;
-                }
-            }
-            if top == 0 {
-                return;
-            }
-            top -= 1;
-            node = stack[top] as usize;
-        }
-    }
-}
-
-impl Bvh {
-    /// Whether `test` holds for an item whose box holds `p` (boxes are closed); stops at
-    /// the first that does. For point queries: which children of a CSG node may hold a
-    /// point.
-    pub fn any_containing(&self, p: DVec3, mut test: impl FnMut(u32) -> bool) -> bool {
-        if self.nodes.is_empty() {
-            return false;
-        }
-        let mut stack = [0u32; STACK_SIZE];
-        let mut top = 0usize;
-        let mut node = 0usize;
-        loop {
-            let n = &self.nodes[node];
-            let b = n.bounds.aabb();
-            if p.cmpge(b.min).all() && p.cmple(b.max).all() {
-                if n.count == 0 {
-                    stack[top] = n.offset;
-                    top += 1;
-                    node += 1;
-                    continue;
-                }
-                let start = n.offset as usize;
-                if self.items[start..start + n.count as usize]
-                    .iter()
-                    .any(|&item| test(item))
-                {
-                    return true;
-                }
-            }
-            if top == 0 {
-                return false;
-            }
-            top -= 1;
-            node = stack[top] as usize;
-        }
-    }
 }
 
 enum SahDecision {
@@ -440,6 +351,7 @@ enum SahDecision {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Ray;
 
     #[test]
     fn traversal_finds_every_box_the_ray_crosses() {

@@ -1,0 +1,430 @@
+//! Nodes of four: the binary tree's nodes gathered so that a ray tests four boxes with the
+//! same few instructions (four single-precision lanes, SSE2's width, which the compiler
+//! vectorises without target features) and visits about a third as many nodes.
+
+use glam::DVec3;
+
+use super::{Binary, BinaryNode, Bvh};
+use crate::geometry::{Aabb, Ray};
+
+pub const WIDTH: usize = 4;
+
+/// The lane of an absent child: its box is empty, so no ray or point ever enters it.
+const EMPTY: u32 = u32::MAX;
+
+/// Four children side by side, their boxes one array per bound and axis (a lane per
+/// child). 128 bytes: two cache lines.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
+pub struct Node {
+    /// `bounds[0][axis]` the children's minima, `bounds[1][axis]` their maxima.
+    bounds: [[[f32; WIDTH]; 3]; 2],
+    /// Interior child: its node. Leaf child: its first item.
+    child: [u32; WIDTH],
+    /// Leaf child: its number of items (> 0). Interior child or absent lane: 0.
+    count: [u16; WIDTH],
+}
+
+impl Node {
+    const EMPTY: Node = Node {
+        bounds: [[[f32::INFINITY; WIDTH]; 3], [[f32::NEG_INFINITY; WIDTH]; 3]],
+        child: [EMPTY; WIDTH],
+        count: [0; WIDTH],
+    };
+
+    fn set(&mut self, lane: usize, b: &BinaryNode, child: u32) {
+        for axis in 0..3 {
+            self.bounds[0][axis][lane] = b.bounds.min[axis];
+            self.bounds[1][axis][lane] = b.bounds.max[axis];
+        }
+        self.child[lane] = child;
+        self.count[lane] = b.count;
+    }
+
+    /// The box of the node's children together.
+    fn aabb(&self) -> Aabb {
+        (0..WIDTH)
+            .filter(|&lane| self.child[lane] != EMPTY)
+            .fold(Aabb::EMPTY, |a, lane| {
+                let corner = |b: usize| DVec3::from_array(self.bounds[b].map(|v| v[lane].into()));
+                a.union(&Aabb::new(corner(0), corner(1)))
+            })
+    }
+}
+
+/// Most nodes a traversal's stack holds: three more per level (four children pushed, one
+/// popped). The binary tree is at most 40 SAH levels and 32 median levels deep, and a node
+/// of four spans at least one binary level.
+const DEEP_STACK: usize = 3 * 72 + 1;
+/// The stack of trees up to 13 levels deep (about 10^7 items), which start up with less
+/// to clear.
+const SHALLOW_STACK: usize = 3 * 13 + 1;
+
+/// Gathers the binary tree into nodes of four, depth first, so the nodes a ray visits one
+/// after another are mostly neighbours.
+pub(super) fn collapse(tree: Binary) -> Bvh {
+    let mut nodes = Vec::with_capacity(tree.nodes.len() / 3 + 1);
+    let depth = if tree.nodes.is_empty() {
+        0
+    } else {
+        add(&tree.nodes, 0, &mut nodes)
+    };
+    Bvh {
+        nodes,
+        items: tree.items,
+        depth,
+    }
+}
+
+/// Adds the node of four standing for binary node `b` and everything below it; returns
+/// the depth below it (1 for a node whose children are all leaves).
+fn add(binary: &[BinaryNode], b: usize, out: &mut Vec<Node>) -> usize {
+    let index = out.len();
+    out.push(Node::EMPTY);
+    let (lanes, n) = children(binary, b);
+    let mut node = Node::EMPTY;
+    let mut depth = 1;
+    for (lane, &k) in lanes[..n].iter().enumerate() {
+        let child = &binary[k];
+        if child.count > 0 {
+            node.set(lane, child, child.offset);
+        } else {
+            node.set(lane, child, out.len() as u32);
+            depth = depth.max(1 + add(binary, k, out));
+        }
+    }
+    out[index] = node;
+    depth
+}
+
+/// The binary nodes that become the children of `b`'s node of four: `b`'s two, then the
+/// largest interior one among them replaced by its two, until there are four or only
+/// leaves. A leaf `b` (a tree of one leaf) is its own only child.
+fn children(binary: &[BinaryNode], b: usize) -> ([usize; WIDTH], usize) {
+    let mut lanes = [b; WIDTH];
+    if binary[b].count > 0 {
+        return (lanes, 1);
+    }
+    let split = |k: usize| (k + 1, binary[k].offset as usize);
+    (lanes[0], lanes[1]) = split(b);
+    let mut n = 2;
+    while n < WIDTH {
+        let largest = (0..n)
+            .filter(|&i| binary[lanes[i]].count == 0)
+            .map(|i| (binary[lanes[i]].bounds.aabb().surface_area(), i))
+            .fold(None, |best: Option<(f64, usize)>, c| match best {
+                Some(b) if b.0 >= c.0 => Some(b),
+                _ => Some(c),
+            });
+        let Some((_, i)) = largest else {
+            break;
+        };
+        (lanes[i], lanes[n]) = split(lanes[i]);
+        n += 1;
+    }
+    (lanes, n)
+}
+
+/// Slack on a box's far distance: the slab test's three roundings (the reciprocal, the
+/// difference, the product) each err by at most 2^-24, so a far distance scaled by
+/// 1 + 2^-20 is never nearer than the exact one (pbrt's 1 + 2 gamma(3), rounded up).
+const SLACK: f32 = 1.0 + 1.0 / 1_048_576.0;
+
+/// A ray as the box tests need it: in single precision, the origin rounded toward each
+/// slab's side so that rounding never narrows the interval. A direction component too
+/// small for a single-precision reciprocal (below 3e-39) counts as zero.
+struct BoxRay {
+    inv: [f32; 3],
+    /// Per axis: which of a node's bounds holds the near planes (1, the maxima, when the
+    /// ray runs toward -axis).
+    near: [usize; 3],
+    near_origin: [f32; 3],
+    far_origin: [f32; 3],
+}
+
+impl BoxRay {
+    #[inline(always)]
+    fn new(ray: &Ray) -> BoxRay {
+        let mut r = BoxRay {
+            inv: [0.0; 3],
+            near: [0; 3],
+            near_origin: [0.0; 3],
+            far_origin: [0.0; 3],
+        };
+        for axis in 0..3 {
+            let inv = (1.0 / ray.direction[axis]) as f32;
+            let o = ray.origin[axis];
+            let (down, up) = (round(o, false), round(o, true));
+            let negative = inv < 0.0;
+            r.inv[axis] = inv;
+            r.near[axis] = usize::from(negative);
+            (r.near_origin[axis], r.far_origin[axis]) =
+                if negative { (down, up) } else { (up, down) };
+        }
+        r
+    }
+
+    /// Each lane's entry distance and a bit per lane whose box the ray meets in
+    /// [0, t_max]. A NaN (0 x infinity, a ray in a slab's plane) is passed over by the
+    /// comparisons, which keeps the test conservative.
+    #[inline(always)]
+    fn test(&self, node: &Node, t_max: f32) -> ([f32; WIDTH], u32) {
+        let mut t0 = [0.0f32; WIDTH];
+        let mut t1 = [t_max; WIDTH];
+        for axis in 0..3 {
+            let near = &node.bounds[self.near[axis]][axis];
+            let far = &node.bounds[1 - self.near[axis]][axis];
+            for lane in 0..WIDTH {
+                let a = (near[lane] - self.near_origin[axis]) * self.inv[axis];
+                let b = (far[lane] - self.far_origin[axis]) * self.inv[axis];
+                t0[lane] = if a > t0[lane] { a } else { t0[lane] };
+                t1[lane] = if b < t1[lane] { b } else { t1[lane] };
+            }
+        }
+        let mut mask = 0;
+        for lane in 0..WIDTH {
+            mask |= u32::from(t0[lane] <= t1[lane] * SLACK) << lane;
+        }
+        (t0, mask)
+    }
+}
+
+/// `v` in single precision, rounded up or down (never toward the other side of `v`).
+#[inline(always)]
+fn round(v: f64, up: bool) -> f32 {
+    let f = v as f32;
+    match (up, f64::from(f).total_cmp(&v)) {
+        (true, std::cmp::Ordering::Less) => f.next_up(),
+        (false, std::cmp::Ordering::Greater) => f.next_down(),
+        _ => f,
+    }
+}
+
+/// Subtrees waiting to be visited, in two arrays of plain numbers (which start zeroed at
+/// the cost of a memset, not a store per field): each one's node, or its leaf's first
+/// item and count, and its entry distance, to pass it over once a nearer hit is found.
+struct Stack<const N: usize> {
+    entry: [u64; N],
+    t: [f32; N],
+    top: usize,
+}
+
+impl<const N: usize> Stack<N> {
+    fn new() -> Self {
+        Stack {
+            entry: [0; N],
+            t: [0.0; N],
+            top: 1,
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, t: f32, child: u32, count: u16) {
+        self.entry[self.top] = u64::from(child) | u64::from(count) << 32;
+        self.t[self.top] = t;
+        self.top += 1;
+    }
+
+    /// The entry distance, the child and the count of the subtree on top.
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(f32, u32, u16)> {
+        self.top = self.top.checked_sub(1)?;
+        let e = self.entry[self.top];
+        Some((self.t[self.top], e as u32, (e >> 32) as u16))
+    }
+}
+
+impl Bvh {
+    /// Visits leaves whose boxes the ray enters before `t_max`, nearer boxes first. The
+    /// callback gets an item and the current `t_max`, and returns a new `t_max` (shrinking it
+    /// prunes farther boxes) or `None` to stop the traversal.
+    #[inline]
+    pub fn traverse(&self, ray: &Ray, t_max: f64, visit: impl FnMut(u32, f64) -> Option<f64>) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        if self.depth * 3 < SHALLOW_STACK {
+            self.walk::<SHALLOW_STACK, true>(ray, t_max, visit);
+        } else {
+            self.walk::<DEEP_STACK, true>(ray, t_max, visit);
+        }
+    }
+
+    /// [`Bvh::traverse`] in whatever order is quickest, for callers that want any hit or
+    /// every hit (shadow rays, crossings), not the nearest.
+    #[inline]
+    pub fn traverse_any(&self, ray: &Ray, t_max: f64, visit: impl FnMut(u32, f64) -> Option<f64>) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        if self.depth * 3 < SHALLOW_STACK {
+            self.walk::<SHALLOW_STACK, false>(ray, t_max, visit);
+        } else {
+            self.walk::<DEEP_STACK, false>(ray, t_max, visit);
+        }
+    }
+
+    #[inline(always)]
+    fn walk<const N: usize, const NEAREST_FIRST: bool>(
+        &self,
+        ray: &Ray,
+        mut t_max: f64,
+        mut visit: impl FnMut(u32, f64) -> Option<f64>,
+    ) {
+        let r = BoxRay::new(ray);
+        let mut stack = Stack::<N>::new();
+        while let Some((t_entry, child, count)) = stack.pop() {
+            if f64::from(t_entry) > t_max * f64::from(SLACK) {
+                continue;
+            }
+            if count > 0 {
+                let start = child as usize;
+                for &item in &self.items[start..start + usize::from(count)] {
+                    match visit(item, t_max) {
+                        Some(t) => t_max = t,
+                        None => return,
+                    }
+                }
+                continue;
+            }
+            let node = &self.nodes[child as usize];
+            let (t, mut mask) = r.test(node, round(t_max, true));
+            if !NEAREST_FIRST {
+                while mask != 0 {
+                    let lane = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    stack.push(t[lane], node.child[lane], node.count[lane]);
+                }
+                continue;
+            }
+            // Farthest first onto the stack, so the nearest comes off it next.
+            let mut order = [0usize; WIDTH];
+            let mut n = 0;
+            while mask != 0 {
+                let lane = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                let mut i = n;
+                while i > 0 && t[order[i - 1]] < t[lane] {
+                    order[i] = order[i - 1];
+                    i -= 1;
+                }
+                order[i] = lane;
+                n += 1;
+            }
+            for &lane in &order[..n] {
+                stack.push(t[lane], node.child[lane], node.count[lane]);
+            }
+        }
+    }
+
+    /// Whether `test` holds for an item whose box holds `p` (boxes are closed); stops at
+    /// the first that does. For point queries: which children of a CSG node may hold a
+    /// point.
+    pub fn any_containing(&self, p: DVec3, test: impl FnMut(u32) -> bool) -> bool {
+        if self.nodes.is_empty() {
+            return false;
+        }
+        if self.depth * 3 < SHALLOW_STACK {
+            self.any_containing_in::<SHALLOW_STACK>(p, test)
+        } else {
+            self.any_containing_in::<DEEP_STACK>(p, test)
+        }
+    }
+
+    fn any_containing_in<const N: usize>(
+        &self,
+        p: DVec3,
+        mut test: impl FnMut(u32) -> bool,
+    ) -> bool {
+        let p = p.to_array();
+        let mut stack = [0u32; N];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = &self.nodes[stack[top] as usize];
+            for lane in 0..WIDTH {
+                let holds = (0..3).all(|a| {
+                    f64::from(node.bounds[0][a][lane]) <= p[a]
+                        && p[a] <= f64::from(node.bounds[1][a][lane])
+                });
+                if !holds {
+                    continue;
+                }
+                let (child, count) = (node.child[lane], usize::from(node.count[lane]));
+                if count == 0 {
+                    stack[top] = child;
+                    top += 1;
+                } else if self.items[child as usize..][..count]
+                    .iter()
+                    .any(|&item| test(item))
+                {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// The box around every item (empty for an empty tree).
+    pub fn bounds(&self) -> Aabb {
+        self.nodes.first().map_or(Aabb::EMPTY, Node::aabb)
+    }
+
+    /// The deepest leaf's depth in nodes of four (0 for an empty tree).
+    pub fn depth(&self) -> usize {
+        self.depth
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::NodeBox;
+    use super::*;
+
+    /// Rays from random origins in random directions, at scales from tiny to astronomic:
+    /// the single-precision test never misses a box the exact double-precision test meets.
+    #[test]
+    fn the_single_precision_test_is_conservative() {
+        let mut uniform = crate::geometry::uniform_stream(0x5851_F42D_4C95_7F2Du64);
+        let mut next = move || uniform() - 0.5;
+        let mut met = 0;
+        for scale in [1e-20, 1e-3, 1.0, 1e4, 1e9, 1e20] {
+            for _ in 0..20_000 {
+                let a = DVec3::new(next(), next(), next()) * scale;
+                let b = a + DVec3::new(next(), next(), next()).abs() * scale * 0.1;
+                let exact = Aabb::new(a, b);
+                let origin = DVec3::new(next(), next(), next()) * scale * 2.0;
+                // Aim near the box's corner or face so many rays graze it.
+                let target = a + (b - a) * DVec3::new(next() + 0.5, next() + 0.5, 1.0);
+                let mut d = target - origin;
+                if next() < -0.3 {
+                    d.x = 0.0;
+                }
+                let ray = Ray::new(origin, d);
+                let t_max = if next() < 0.0 { f64::INFINITY } else { 1.0 };
+                let mut node = Node::EMPTY;
+                let bn = BinaryNode {
+                    bounds: NodeBox::enclosing(&exact),
+                    offset: 0,
+                    count: 1,
+                };
+                node.set(0, &bn, 0);
+                let (_, mask) = BoxRay::new(&ray).test(&node, round(t_max, true));
+                if exact.hit(&ray, ray.direction.recip(), t_max).is_some() {
+                    met += 1;
+                    assert_eq!(mask & 1, 1, "missed {exact:?} on {ray:?}");
+                }
+                assert_eq!(mask & !1, 0, "an empty lane was met");
+            }
+        }
+        assert!(
+            met > 10_000,
+            "too few rays met their box ({met}) to test anything"
+        );
+    }
+
+    #[test]
+    fn nodes_are_two_cache_lines() {
+        assert_eq!(size_of::<Node>(), 128);
+    }
+}
