@@ -88,18 +88,48 @@ fn skip_trivia<'a>(file: FileId, text: &'a str, mut rest: &'a str) -> Result<&'a
     }
 }
 
+/// The interned names, and where the keywords' copies lie: they are interned first, side
+/// by side in one block, so whether a name is a keyword is whether it points into it.
+struct Interner {
+    names: Mutex<HashSet<Name>>,
+    keywords: std::ops::Range<usize>,
+}
+
+fn interner() -> &'static Interner {
+    static INTERNER: OnceLock<Interner> = OnceLock::new();
+    INTERNER.get_or_init(|| {
+        let keywords = super::eval::keywords::KEYWORDS;
+        let block: &'static str = Box::leak(keywords.concat().into_boxed_str());
+        let mut names = HashSet::new();
+        let mut at = 0;
+        for k in keywords {
+            names.insert(&block[at..at + k.len()]);
+            at += k.len();
+        }
+        let start = block.as_ptr() as usize;
+        Interner {
+            names: Mutex::new(names),
+            keywords: start..start + block.len(),
+        }
+    })
+}
+
 /// The one copy of `text`: names and strings live as long as the process, so tokens are
 /// `Copy` (see [`Name`]). What is kept is bounded by the distinct texts of the scenes read.
 pub fn intern(text: &str) -> Name {
-    static NAMES: OnceLock<Mutex<HashSet<Name>>> = OnceLock::new();
-    let names = NAMES.get_or_init(|| Mutex::new(HashSet::new()));
-    let mut names = names.lock().unwrap_or_else(|e| e.into_inner());
+    let mut names = interner().names.lock().unwrap_or_else(|e| e.into_inner());
     if let Some(&name) = names.get(text) {
         return name;
     }
     let name: Name = Box::leak(text.to_owned().into_boxed_str());
     names.insert(name);
     name
+}
+
+/// Whether an interned name (a token's) is a keyword: a comparison of its address, where
+/// `keywords::is_keyword` hashes the text (the evaluator asks for every name it reads).
+pub fn is_interned_keyword(name: Name) -> bool {
+    !name.is_empty() && interner().keywords.contains(&(name.as_ptr() as usize))
 }
 
 fn token(i: &str) -> IResult<&str, TokenKind> {
@@ -211,4 +241,28 @@ fn single_punct(i: &str) -> IResult<&str, Punct> {
         _ => Punct::Pipe,
     };
     Ok((rest, p))
+}
+
+#[cfg(test)]
+mod keyword_tests {
+    use super::*;
+
+    /// The address test agrees with the text's: every keyword interned is one, and names
+    /// near them (prefixes, suffixes, other cases) are not.
+    #[test]
+    fn interned_keywords_are_known_by_address() {
+        for &k in super::super::eval::keywords::KEYWORDS {
+            assert!(is_interned_keyword(intern(k)), "{k}");
+            for other in [
+                format!("{k}_"),
+                format!("My{k}"),
+                k.to_uppercase(),
+                k[1..].to_string(),
+            ] {
+                let keyword = super::super::eval::keywords::is_keyword(&other);
+                assert_eq!(is_interned_keyword(intern(&other)), keyword, "{other}");
+            }
+        }
+        assert!(!is_interned_keyword(intern("")));
+    }
 }

@@ -97,6 +97,7 @@ impl Evaluator<'_> {
             && self.scene.lights.is_empty()
             && self.changed_default.is_none();
         if first {
+            self.default_with_pigment = None;
             self.default_texture.finish.ambient = glam::DVec3::ZERO;
             self.changed_default = Some(std::sync::Arc::new(self.default_texture.clone()));
         }
@@ -442,6 +443,7 @@ impl Evaluator<'_> {
 
     /// `#default { texture/pigment/finish {...} }`: the texture new textures start from.
     pub(super) fn default_directive(&mut self) -> R<()> {
+        self.default_with_pigment = None;
         let open = self.expect(Punct::LBrace, "after `#default`")?;
         loop {
             let tok = self.peek()?;

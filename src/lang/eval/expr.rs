@@ -90,7 +90,7 @@ impl Evaluator<'_> {
         }
         let value = match tok.kind {
             TokenKind::Number(n) => n,
-            TokenKind::Ident(name) if !super::keywords::is_keyword(name) => {
+            TokenKind::Ident(name) if !crate::lang::parse::is_interned_keyword(name) => {
                 match self.lookup(name)? {
                     Value::Float(f) => *f,
                     _ => return None,

@@ -497,6 +497,11 @@ impl Evaluator<'_> {
     /// `pigment`, `finish`, `normal`, `interior`, `material`; false for other words.
     pub(super) fn appearance_modifier(&mut self, object: &mut Object, word: &str) -> R<bool> {
         match word {
+            "pigment" if object.texture.is_none() => {
+                self.next()?;
+                let pigment = self.pigment_body(self.default_texture.pigment.clone())?;
+                object.texture = Some(self.default_texture_with(pigment));
+            }
             "pigment" => self.edit_texture(object, |ev, t| {
                 t.pigment = ev.pigment_body(std::mem::take(&mut t.pigment))?;
                 Ok(())
@@ -520,6 +525,25 @@ impl Evaluator<'_> {
             _ => return Ok(false),
         }
         Ok(true)
+    }
+
+    /// The default texture with `pigment`, shared with the last object that had the same.
+    fn default_texture_with(
+        &mut self,
+        pigment: crate::scene::Pigment,
+    ) -> Arc<crate::scene::Texture> {
+        if let Some(t) = &self.default_with_pigment
+            && t.pigment == pigment
+        {
+            return t.clone();
+        }
+        let texture = crate::scene::Texture {
+            pigment,
+            ..self.default_texture.clone()
+        };
+        let shared = self.share_texture(texture);
+        self.default_with_pigment = Some(shared.clone());
+        shared
     }
 
     /// A texture item outside a `texture` block changes the object's texture, or the
