@@ -59,6 +59,9 @@ const DEEP_STACK: usize = 3 * 72 + 1;
 /// The stack of trees up to 13 levels deep (about 10^7 items), which start up with less
 /// to clear.
 const SHALLOW_STACK: usize = 3 * 13 + 1;
+/// The stack of trees of one or two levels (up to 64 leaves): small scenes, where clearing
+/// a larger stack for each ray is a measurable part of the ray's cost.
+const SMALL_STACK: usize = 3 * 2 + 1;
 
 /// Gathers the binary tree into nodes of four, depth first, so the nodes a ray visits one
 /// after another are mostly neighbours.
@@ -243,7 +246,9 @@ impl Bvh {
         if self.nodes.is_empty() {
             return;
         }
-        if self.depth * 3 < SHALLOW_STACK {
+        if self.depth * 3 < SMALL_STACK {
+            self.walk::<SMALL_STACK, true>(ray, t_max, visit);
+        } else if self.depth * 3 < SHALLOW_STACK {
             self.walk::<SHALLOW_STACK, true>(ray, t_max, visit);
         } else {
             self.walk::<DEEP_STACK, true>(ray, t_max, visit);
@@ -257,7 +262,9 @@ impl Bvh {
         if self.nodes.is_empty() {
             return;
         }
-        if self.depth * 3 < SHALLOW_STACK {
+        if self.depth * 3 < SMALL_STACK {
+            self.walk::<SMALL_STACK, false>(ray, t_max, visit);
+        } else if self.depth * 3 < SHALLOW_STACK {
             self.walk::<SHALLOW_STACK, false>(ray, t_max, visit);
         } else {
             self.walk::<DEEP_STACK, false>(ray, t_max, visit);
