@@ -243,31 +243,34 @@ impl Bvh {
     /// prunes farther boxes) or `None` to stop the traversal.
     #[inline]
     pub fn traverse(&self, ray: &Ray, t_max: f64, visit: impl FnMut(u32, f64) -> Option<f64>) {
-        if self.nodes.is_empty() {
-            return;
-        }
-        if self.depth * 3 < SMALL_STACK {
-            self.walk::<SMALL_STACK, true>(ray, t_max, visit);
-        } else if self.depth * 3 < SHALLOW_STACK {
-            self.walk::<SHALLOW_STACK, true>(ray, t_max, visit);
-        } else {
-            self.walk::<DEEP_STACK, true>(ray, t_max, visit);
-        }
+        self.walk_sized::<true>(ray, t_max, visit);
     }
 
     /// [`Bvh::traverse`] in whatever order is quickest, for callers that want any hit or
     /// every hit (shadow rays, crossings), not the nearest.
     #[inline]
     pub fn traverse_any(&self, ray: &Ray, t_max: f64, visit: impl FnMut(u32, f64) -> Option<f64>) {
+        self.walk_sized::<false>(ray, t_max, visit);
+    }
+
+    /// The walk with the smallest stack the tree's depth allows.
+    #[inline(always)]
+    fn walk_sized<const NEAREST_FIRST: bool>(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        visit: impl FnMut(u32, f64) -> Option<f64>,
+    ) {
         if self.nodes.is_empty() {
             return;
         }
-        if self.depth * 3 < SMALL_STACK {
-            self.walk::<SMALL_STACK, false>(ray, t_max, visit);
-        } else if self.depth * 3 < SHALLOW_STACK {
-            self.walk::<SHALLOW_STACK, false>(ray, t_max, visit);
+        let need = self.depth * 3 + 1;
+        if need <= SMALL_STACK {
+            self.walk::<SMALL_STACK, NEAREST_FIRST>(ray, t_max, visit);
+        } else if need <= SHALLOW_STACK {
+            self.walk::<SHALLOW_STACK, NEAREST_FIRST>(ray, t_max, visit);
         } else {
-            self.walk::<DEEP_STACK, false>(ray, t_max, visit);
+            self.walk::<DEEP_STACK, NEAREST_FIRST>(ray, t_max, visit);
         }
     }
 
@@ -332,6 +335,7 @@ impl Bvh {
             return false;
         }
         if self.depth * 3 < SHALLOW_STACK {
+            // As many as a walk's stack: three more per level.
             self.any_containing_in::<SHALLOW_STACK>(p, test)
         } else {
             self.any_containing_in::<DEEP_STACK>(p, test)
@@ -428,6 +432,32 @@ mod tests {
             met > 10_000,
             "too few rays met their box ({met}) to test anything"
         );
+    }
+
+    /// Boxes at exponentially growing distances make the SAH build a chain as deep as its
+    /// limits allow: the deepest stack is used, and a ray along the chain still meets every
+    /// box, nearest first, as does a point query for each.
+    #[test]
+    fn a_deep_tree_is_walked_whole() {
+        let bounds: Vec<Aabb> = (0..300)
+            .map(|i| {
+                let x = 1.2f64.powi(i);
+                Aabb::new(DVec3::new(x, -0.5, -0.5), DVec3::new(x * 1.1, 0.5, 0.5))
+            })
+            .collect();
+        let bvh = Bvh::build(&bounds);
+        assert!(bvh.depth() * 3 + 1 > SHALLOW_STACK, "depth {}", bvh.depth());
+        let mut seen = Vec::new();
+        let ray = Ray::new(DVec3::new(0.0, 0.0, 0.0), DVec3::X);
+        bvh.traverse_any(&ray, f64::INFINITY, |i, t| {
+            seen.push(i);
+            Some(t)
+        });
+        seen.sort_unstable();
+        assert_eq!(seen, (0..300).collect::<Vec<u32>>());
+        for (i, b) in bounds.iter().enumerate() {
+            assert!(bvh.any_containing(b.centre(), |j| j as usize == i));
+        }
     }
 
     #[test]
