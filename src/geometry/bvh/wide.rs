@@ -72,7 +72,10 @@ pub(super) fn collapse(tree: Binary) -> Bvh {
     } else {
         add(&tree.nodes, 0, &mut nodes)
     };
-    debug_assert!(depth * 3 + 1 <= DEEP_STACK, "a tree deeper than the build allows");
+    debug_assert!(
+        depth * 3 < DEEP_STACK,
+        "a tree deeper than the build allows"
+    );
     Bvh {
         nodes,
         items: tree.items,
