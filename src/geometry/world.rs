@@ -56,11 +56,13 @@ fn decode(item: u32) -> Ref {
 }
 
 /// What the render-ready scene takes per primitive at its peak (while its BVH is built):
-/// the primitive, its bounds and the tree's share. The scene language charges each object
+/// the primitive, its bounds, the tree's share and its place in the scene's order. The scene language charges each object
 /// this much beside its own size against the memory budget, so the budget bounds the
 /// whole process, not only the scene model.
-pub const PREPARED_BYTES_PER_PRIMITIVE: usize =
-    size_of::<Primitive>() + size_of::<Aabb>() + super::bvh::BYTES_PER_ITEM;
+pub const PREPARED_BYTES_PER_PRIMITIVE: usize = size_of::<Primitive>()
+    + size_of::<Aabb>()
+    + super::bvh::BYTES_PER_ITEM
+    + size_of::<(u32, u32)>();
 
 #[derive(Clone, Copy, Debug)]
 pub struct Primitive {
@@ -493,6 +495,7 @@ impl World {
             + self.bvh.nodes.capacity() * size_of::<super::bvh::Node>()
             + self.bvh.items.capacity() * 4
             + self.unbounded.capacity() * 4
+            + self.declared.capacity() * size_of::<(u32, u32)>()
             + self.tables.memory_bytes()
             + self.instances.capacity() * size_of::<Instance>()
             + self.prototypes().map(World::memory_bytes).sum::<usize>()

@@ -90,17 +90,9 @@ pub struct NodeBox {
 
 impl NodeBox {
     pub fn enclosing(b: &Aabb) -> NodeBox {
-        let down = |v: f64| {
-            let f = v as f32;
-            if f64::from(f) > v { f.next_down() } else { f }
-        };
-        let up = |v: f64| {
-            let f = v as f32;
-            if f64::from(f) < v { f.next_up() } else { f }
-        };
         NodeBox {
-            min: b.min.to_array().map(down),
-            max: b.max.to_array().map(up),
+            min: b.min.to_array().map(f32_down),
+            max: b.max.to_array().map(f32_up),
         }
     }
 
@@ -110,6 +102,20 @@ impl NodeBox {
             max: DVec3::from_array(self.max.map(f64::from)),
         }
     }
+}
+
+/// `v` in single precision, rounded down (never above `v`).
+#[inline(always)]
+fn f32_down(v: f64) -> f32 {
+    let f = v as f32;
+    if f64::from(f) > v { f.next_down() } else { f }
+}
+
+/// `v` in single precision, rounded up (never below `v`).
+#[inline(always)]
+fn f32_up(v: f64) -> f32 {
+    let f = v as f32;
+    if f64::from(f) < v { f.next_up() } else { f }
 }
 
 /// What the tree costs per item while it is built and after: the item, its index, a

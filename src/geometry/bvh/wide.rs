@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use super::{Binary, BinaryNode, Bvh};
+use super::{Binary, BinaryNode, Bvh, f32_down, f32_up};
 use crate::geometry::{Aabb, Ray};
 
 pub const WIDTH: usize = 4;
@@ -161,7 +161,7 @@ impl BoxRay {
         for axis in 0..3 {
             let inv = (1.0 / ray.direction[axis]) as f32;
             let o = ray.origin[axis];
-            let (down, up) = (round(o, false), round(o, true));
+            let (down, up) = (f32_down(o), f32_up(o));
             let negative = inv < 0.0;
             r.inv[axis] = inv;
             r.near[axis] = usize::from(negative);
@@ -193,17 +193,6 @@ impl BoxRay {
             mask |= u32::from(t0[lane] <= t1[lane] * SLACK) << lane;
         }
         (t0, mask)
-    }
-}
-
-/// `v` in single precision, rounded up or down (never toward the other side of `v`).
-#[inline(always)]
-fn round(v: f64, up: bool) -> f32 {
-    let f = v as f32;
-    match (up, f64::from(f).total_cmp(&v)) {
-        (true, std::cmp::Ordering::Less) => f.next_up(),
-        (false, std::cmp::Ordering::Greater) => f.next_down(),
-        _ => f,
     }
 }
 
@@ -302,7 +291,7 @@ impl Bvh {
                 continue;
             }
             let node = &self.nodes[child as usize];
-            let (t, mut mask) = r.test(node, round(t_max, true));
+            let (t, mut mask) = r.test(node, f32_up(t_max));
             if !NEAREST_FIRST {
                 while mask != 0 {
                     let lane = mask.trailing_zeros() as usize;
@@ -424,7 +413,7 @@ mod tests {
                     count: 1,
                 };
                 node.set(0, &bn, 0);
-                let (_, mask) = BoxRay::new(&ray).test(&node, round(t_max, true));
+                let (_, mask) = BoxRay::new(&ray).test(&node, f32_up(t_max));
                 if exact.hit(&ray, ray.direction.recip(), t_max).is_some() {
                     met += 1;
                     assert_eq!(mask & 1, 1, "missed {exact:?} on {ray:?}");
