@@ -56,9 +56,9 @@ fn decode(item: u32) -> Ref {
 }
 
 /// What the render-ready scene takes per primitive at its peak (while its BVH is built):
-/// the primitive, its bounds, the tree's share and its place in the scene's order. The scene language charges each object
-/// this much beside its own size against the memory budget, so the budget bounds the
-/// whole process, not only the scene model.
+/// the primitive, its bounds, the tree's share and its place in the scene's order. The
+/// scene language charges each object this much beside its own size against the memory
+/// budget, so the budget bounds the whole process, not only the scene model.
 pub const PREPARED_BYTES_PER_PRIMITIVE: usize = size_of::<Primitive>()
     + size_of::<Aabb>()
     + super::bvh::BYTES_PER_ITEM
@@ -196,9 +196,9 @@ pub struct World {
     bvh: Bvh,
     unbounded: Vec<u32>,
     /// Each top-level item's place in the scene's order, sorted by item: of two bounded
-    /// surfaces met at the same distance, the one declared first is seen (as POV-Ray shows
-    /// advanced/pawns' rosewood squares, not the pine block whose top they share), whatever
-    /// the tree's shape. Read only on such ties.
+    /// surfaces met at the same distance, the one declared first is seen, whatever the
+    /// tree's shape (advanced/pawns' rosewood squares, declared before the pine board their
+    /// tops are flush with; POV-Ray speckles between the two there). Read only on ties.
     declared: Vec<(u32, u32)>,
     /// The bounds of the objects photons are shot at (`photons { target }`).
     photon_targets: Vec<Aabb>,
