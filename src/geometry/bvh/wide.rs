@@ -206,6 +206,7 @@ struct Stack<const N: usize> {
 }
 
 impl<const N: usize> Stack<N> {
+    /// A stack holding the root already: its zeroed first entry is node 0, entered at 0.
     fn new() -> Self {
         Stack {
             entry: [0; N],
