@@ -8,7 +8,7 @@ use std::rc::Rc;
 use super::super::diagnostics::{Diagnostic, Span};
 use super::super::syntax::{Punct, Token, TokenKind};
 use super::Evaluator;
-use super::stream::{Cond, SkipStop};
+use super::stream::{Cond, Key, NameRef, Scope, SkipStop};
 use super::value::{ArrayValue, MacroDef, Value};
 
 type R<T> = Result<T, Diagnostic>;
@@ -185,8 +185,13 @@ impl Evaluator<'_> {
         let Some(n) = id.ident() else {
             return Err(self.expected("an identifier", &id));
         };
-        if let Some(scope) = self.scopes.iter_mut().rev().find(|s| s.contains_key(n)) {
-            scope.remove(n);
+        if let Some(scope) = self
+            .scopes
+            .iter_mut()
+            .rev()
+            .find(|s| s.contains_key(&NameRef(n)))
+        {
+            scope.remove(&NameRef(n));
         }
         Ok(())
     }
@@ -723,7 +728,7 @@ impl Evaluator<'_> {
 
     fn define_macro(&mut self, span: Span) -> R<()> {
         let id = self.raw_next();
-        let Some(name) = id.ident().map(Rc::<str>::from) else {
+        let Some(name) = id.ident() else {
             return Err(self.expected("a macro name", &id));
         };
         let open = self.raw_next();
@@ -741,7 +746,7 @@ impl Evaluator<'_> {
             let Some(p) = t.ident() else {
                 return Err(self.expected("a parameter name or `)`", &t));
             };
-            params.push((Rc::from(p), optional));
+            params.push((p, optional));
             let sep = self.raw_next();
             if sep.is_punct(Punct::RParen) {
                 break;
@@ -757,7 +762,7 @@ impl Evaluator<'_> {
             return Ok(());
         };
         let def = MacroDef {
-            name: name.clone(),
+            name,
             params,
             tokens,
             start,
@@ -765,7 +770,7 @@ impl Evaluator<'_> {
             file,
         };
         self.special_names = true;
-        self.scopes[0].insert(name, Value::Macro(Rc::new(def)));
+        self.scopes[0].insert(Key::new(name), Value::Macro(Rc::new(def)));
         Ok(())
     }
 
@@ -774,7 +779,7 @@ impl Evaluator<'_> {
             return Ok(());
         };
         self.expect(Punct::LParen, &format!("after the macro name `{name}`"))?;
-        let mut locals = super::stream::Scope::default();
+        let mut locals = Scope::default();
         let mut by_ref = Vec::new();
         let mut i = 0;
         let saved = std::mem::replace(&mut self.in_vector, false);
@@ -798,12 +803,12 @@ impl Evaluator<'_> {
                                 !super::keywords::is_keyword(n) && self.lookup(n).is_some()
                             }) =>
                     {
-                        a.ident().map(Rc::<str>::from)
+                        a.ident()
                     }
                     _ => None,
                 };
                 // A function passed by name is passed itself: an expression would call it.
-                let value = match by_name.as_deref().and_then(|n| self.lookup(n)) {
+                let value = match by_name.and_then(|n| self.lookup(n)) {
                     Some(f @ Value::Function(_)) => {
                         let f = f.clone();
                         self.next()?;
@@ -812,9 +817,9 @@ impl Evaluator<'_> {
                     _ => self.declared_value()?,
                 };
                 if let Some(caller) = by_name {
-                    by_ref.push((param.clone(), caller));
+                    by_ref.push((param, caller));
                 }
-                locals.insert(param, value);
+                locals.insert(Key::new(param), value);
                 i += 1;
                 // POV-Ray's commas between arguments are optional (incdemo/shapes.pov
                 // passes an object and then `-y` without one).

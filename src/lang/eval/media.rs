@@ -19,15 +19,15 @@ impl Evaluator<'_> {
                 m.transform_by(&t);
                 return Ok(());
             }
-            let Some(word) = tok.ident().map(str::to_string) else {
+            let Some(word) = tok.ident() else {
                 return Err(ev.stray_in_block(tok, "the media"));
             };
-            if let Some(Value::Media(named)) = ev.lookup(&word) {
+            if let Some(Value::Media(named)) = ev.lookup(word) {
                 *m = (**named).clone();
                 ev.next()?;
                 return Ok(());
             }
-            if !ev.media_item(m, &word, tok)? {
+            if !ev.media_item(m, word, tok)? {
                 return Err(ev.stray_in_block(tok, "the media"));
             }
             Ok(())

@@ -50,7 +50,7 @@ use crate::scene::Scene;
 use super::SourceFiles;
 use super::diagnostics::{Diagnostic, Files, Span};
 use super::syntax::{Punct, Token, TokenKind};
-use stream::{Cond, Frame, Scope};
+use stream::{Cond, Frame, Key, NameRef, Scope};
 use value::Value;
 
 /// Deeper nesting than this (blocks, parentheses, macro calls, includes) is reported rather
@@ -171,12 +171,12 @@ impl<'w> Evaluator<'w> {
         if value.needs_check_in_stream() {
             self.special_names = true;
         }
-        self.scopes[0].insert(Rc::from(name), value);
+        self.scopes[0].insert(Key::of(name), value);
     }
 
     /// A global identifier's value after the scene was read; for tests that check values.
     pub(crate) fn global(&self, name: &str) -> Option<&Value> {
-        self.scopes[0].get(name)
+        self.scopes[0].get(&NameRef(name))
     }
 
     /// Reads the whole scene from `name`/`source` and returns the finished scene.
@@ -282,13 +282,13 @@ impl<'w> Evaluator<'w> {
     }
 
     fn lookup(&self, name: &str) -> Option<&Value> {
-        self.scopes.iter().rev().find_map(|s| s.get(name))
+        self.scopes.iter().rev().find_map(|s| s.get(&NameRef(name)))
     }
 
     /// The unknown-identifier error with the nearest declared name as a hint.
     fn unknown_identifier(&self, tok: &Token, name: &str) -> Diagnostic {
         let mut d = self.err(tok.span, format!("unknown identifier `{name}`"));
-        let names = self.scopes.iter().flat_map(|s| s.keys().map(|k| &**k));
+        let names = self.scopes.iter().flat_map(|s| s.keys().map(Key::text));
         if let Some(best) = super::diagnostics::nearest(name, names) {
             d = d.with_hint(format!("did you mean `{best}`?"));
         } else if let Some(best) =

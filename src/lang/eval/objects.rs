@@ -414,7 +414,7 @@ impl Evaluator<'_> {
             if tok.is_punct(punct_close()) {
                 return Ok(());
             }
-            let Some(word) = tok.ident().map(str::to_string) else {
+            let Some(word) = tok.ident() else {
                 return Err(self.stray_in_block(&tok, what));
             };
             if let Some(t) = self.transform_modifier()? {
@@ -426,7 +426,7 @@ impl Evaluator<'_> {
             };
             // Modifiers other than transforms make a shared object this one's own.
             object.unshared();
-            let known = match word.as_str() {
+            let known = match word {
                 "texture" => {
                     self.texture_layer(object, &mut textures)?;
                     true

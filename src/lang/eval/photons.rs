@@ -15,11 +15,11 @@ impl Evaluator<'_> {
     /// values one by one.
     pub(super) fn photon_settings(&mut self, start: PhotonSettings) -> R<PhotonSettings> {
         self.block_items("photons", "the photons block", start, |ev, tok, p| {
-            let Some(word) = tok.ident().map(str::to_string) else {
+            let Some(word) = tok.ident() else {
                 return Err(ev.stray_in_block(tok, "the photons block"));
             };
             ev.next()?;
-            ev.photon_setting(&word, tok, p)
+            ev.photon_setting(word, tok, p)
         })
     }
 

@@ -15,11 +15,11 @@ impl Evaluator<'_> {
     /// values one by one, as POV-Ray reads settings.
     pub(super) fn radiosity_block(&mut self, start: Radiosity) -> R<Radiosity> {
         self.block_items("radiosity", "the radiosity block", start, |ev, tok, r| {
-            let Some(word) = tok.ident().map(str::to_string) else {
+            let Some(word) = tok.ident() else {
                 return Err(ev.stray_in_block(tok, "the radiosity block"));
             };
             ev.next()?;
-            ev.radiosity_item(&word, tok, r)
+            ev.radiosity_item(word, tok, r)
         })
     }
 

@@ -6,15 +6,61 @@ use std::hash::{BuildHasherDefault, Hasher};
 use std::rc::Rc;
 
 use super::super::diagnostics::{Diagnostic, FileId, Span, TracePoint};
-use super::super::parse::tokenize;
-use super::super::syntax::{Token, TokenKind};
+use super::super::parse::{intern, tokenize};
+use super::super::syntax::{Name, Token, TokenKind};
 use super::Evaluator;
 use super::value::{MacroDef, Value};
 
 /// One scope of identifiers. Names are hashed on every use, so the hash is a cheap one
 /// (FxHash's multiply-rotate) rather than SipHash: scene files are not hostile to it in a
 /// way that matters, as a scope holds at most what the scene itself declares.
-pub(super) type Scope = HashMap<Rc<str>, Value, BuildHasherDefault<NameHasher>>;
+pub(super) type Scope = HashMap<Key, Value, BuildHasherDefault<NameHasher>>;
+
+/// A scope's name: interned, so that a lookup by a token's name (the same interned copy)
+/// is settled by comparing addresses, not text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) struct Key(NameRef<'static>);
+
+impl Key {
+    /// The key of a token's name (or of any text that lives as long).
+    pub(super) fn new(name: Name) -> Key {
+        Key(NameRef(name))
+    }
+
+    /// The key of any text: its interned copy.
+    pub(super) fn of(name: &str) -> Key {
+        Key(NameRef(intern(name)))
+    }
+
+    pub(super) fn text(&self) -> &'static str {
+        self.0.0
+    }
+}
+
+impl<'a> std::borrow::Borrow<NameRef<'a>> for Key {
+    fn borrow(&self) -> &NameRef<'a> {
+        &self.0
+    }
+}
+
+/// A name to look up: equal to a key of the same text, at once when it is the key's own
+/// interned copy.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct NameRef<'a>(pub &'a str);
+
+impl PartialEq for NameRef<'_> {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::eq(self.0, other.0) || self.0 == other.0
+    }
+}
+
+impl Eq for NameRef<'_> {}
+
+impl std::hash::Hash for NameRef<'_> {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.0.hash(state);
+    }
+}
 
 /// FxHash: a word at a time, rotate, xor, multiply.
 #[derive(Default, Clone, Copy)]
@@ -38,9 +84,8 @@ impl Hasher for NameHasher {
         }
         let rest = chunks.remainder();
         if !rest.is_empty() {
-            let mut w = [0u8; 8];
-            w[..rest.len()].copy_from_slice(rest);
-            self.add(u64::from_le_bytes(w));
+            // Byte by byte: a copy of a variable length would call memcpy.
+            self.add(rest.iter().rev().fold(0, |w, &b| w << 8 | u64::from(b)));
         }
     }
 
@@ -68,7 +113,7 @@ pub(super) enum FrameKind {
         call: Span,
         /// Parameter name and the caller's identifier it was passed as: POV-Ray passes
         /// identifiers by reference, so assignments to the parameter are copied back.
-        by_ref: Vec<(Rc<str>, Rc<str>)>,
+        by_ref: Vec<(Name, Name)>,
     },
 }
 
@@ -180,7 +225,7 @@ impl Evaluator<'_> {
         def: Rc<MacroDef>,
         call: Span,
         locals: Scope,
-        by_ref: Vec<(Rc<str>, Rc<str>)>,
+        by_ref: Vec<(Name, Name)>,
     ) -> Result<(), Diagnostic> {
         if self.frames.len() >= super::MAX_DEPTH {
             return Err(self.err(
@@ -412,8 +457,8 @@ impl Evaluator<'_> {
             FrameKind::Macro { by_ref, .. } => {
                 let locals = self.scopes.pop().unwrap_or_default();
                 for (param, caller) in by_ref {
-                    if let Some(v) = locals.get(&param) {
-                        self.assign(&caller, v.clone(), false);
+                    if let Some(v) = locals.get(&NameRef(param)) {
+                        self.assign(caller, v.clone(), false);
                     }
                 }
             }
@@ -429,7 +474,7 @@ impl Evaluator<'_> {
         } else {
             (1..self.scopes.len())
                 .rev()
-                .find(|&i| self.scopes[i].contains_key(name))
+                .find(|&i| self.scopes[i].contains_key(&NameRef(name)))
                 .unwrap_or(0)
         };
         self.assign_at(name, value, index);
@@ -443,10 +488,10 @@ impl Evaluator<'_> {
             self.special_names = true;
         }
         let index = index.min(self.scopes.len() - 1);
-        match self.scopes[index].get_mut(name) {
+        match self.scopes[index].get_mut(&NameRef(name)) {
             Some(slot) => *slot = value,
             None => {
-                self.scopes[index].insert(Rc::from(name), value);
+                self.scopes[index].insert(Key::of(name), value);
             }
         }
     }

@@ -431,8 +431,16 @@ impl Evaluator<'_> {
                 first = false;
                 continue;
             }
-            let word = tok.ident().map(str::to_string);
-            match word.as_deref() {
+            let word = tok.ident();
+            // A colour keyword can only start a colour (keywords are never declared): the
+            // common `pigment { color ... }` skips the tests of patterns and names below.
+            if word.is_some_and(super::keywords::is_colour_keyword) {
+                let (c, _) = self.colour()?;
+                p = Pigment::solid(colour_of(c));
+                first = false;
+                continue;
+            }
+            match word {
                 Some(w) if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     p = self.pattern_pigment(w)?;
                 }
@@ -1187,21 +1195,21 @@ impl Evaluator<'_> {
                 }
                 continue;
             }
-            let Some(word) = tok.ident().map(str::to_string) else {
+            let Some(word) = tok.ident() else {
                 return Err(self.stray_in_block(&tok, "the normal"));
             };
-            if let Some(Value::Normal(named)) = self.lookup(&word) {
+            if let Some(Value::Normal(named)) = self.lookup(word) {
                 // `normal { Named ... }`: the declared normal, modified by what follows.
                 n = (**named).clone();
                 self.next()?;
                 continue;
             }
-            if matches!(self.lookup(&word), Some(Value::Array(_))) {
+            if matches!(self.lookup(word), Some(Value::Array(_))) {
                 // `normal { Normals[i] ... }`
                 n = self.normal_element()?;
                 continue;
             }
-            match word.as_str() {
+            match word {
                 w if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     self.next()?;
                     let kind = self.pattern_kind(w)?;
@@ -1390,16 +1398,16 @@ impl Evaluator<'_> {
             if tok.is_punct(Punct::RBrace) {
                 break;
             }
-            let Some(word) = tok.ident().map(str::to_string) else {
+            let Some(word) = tok.ident() else {
                 return Err(self.stray_in_block(&tok, "the finish"));
             };
-            if let Some(Value::Finish(named)) = self.lookup(&word).cloned() {
+            if let Some(Value::Finish(named)) = self.lookup(word).cloned() {
                 self.next()?;
                 f = *named;
                 continue;
             }
             // `finish { Finishes[frame_number - 1] }` (portfolio/f_finish.pov).
-            if matches!(self.lookup(&word), Some(Value::Array(_))) {
+            if matches!(self.lookup(word), Some(Value::Array(_))) {
                 let (v, span) = self.expr()?;
                 let Value::Finish(named) = v else {
                     return Err(
@@ -1410,7 +1418,7 @@ impl Evaluator<'_> {
                 continue;
             }
             self.next()?;
-            match word.as_str() {
+            match word {
                 "ambient" => f.ambient = self.colour_or_float()?,
                 "emission" => f.emission = self.colour_or_float()?,
                 "diffuse" => {
@@ -1456,7 +1464,7 @@ impl Evaluator<'_> {
                 }
                 "irid" => f.irid = Some(self.irid_block()?),
                 "ior" | "subsurface" | "fade_distance" | "fade_power" | "refraction" => {
-                    return Err(self.unsupported(&tok, &word));
+                    return Err(self.unsupported(&tok, word));
                 }
                 _ => return Err(self.stray_in_block(&tok, "the finish")),
             }
@@ -1619,10 +1627,10 @@ impl Evaluator<'_> {
                 t.transform_by(&tr);
                 continue;
             }
-            let Some(word) = tok.ident().map(str::to_string) else {
+            let Some(word) = tok.ident() else {
                 return Err(self.stray_in_block(&tok, "the texture"));
             };
-            match word.as_str() {
+            match word {
                 "pigment" => {
                     self.next()?;
                     t.pigment = self.pigment_body(t.pigment)?;
@@ -1667,12 +1675,12 @@ impl Evaluator<'_> {
                     t.map = Some(Box::new(self.material_map_body()?));
                 }
                 "image_map" => {
-                    return Err(self.unsupported(&tok, &word));
+                    return Err(self.unsupported(&tok, word));
                 }
                 w if t.map.is_some()
                     && self.lookup(w).is_none()
                     && self.pattern_modifier(Modified::Texture(&mut t), w)? => {}
-                _ => match self.lookup(&word).cloned() {
+                _ => match self.lookup(word).cloned() {
                     Some(Value::Texture(named)) => {
                         self.next()?;
                         t = *named;
@@ -1690,8 +1698,8 @@ impl Evaluator<'_> {
                             }
                         }
                     }
-                    _ if UNSUPPORTED_PATTERNS.contains(&word.as_str()) => {
-                        return Err(self.unsupported(&tok, &word));
+                    _ if UNSUPPORTED_PATTERNS.contains(&word) => {
+                        return Err(self.unsupported(&tok, word));
                     }
                     _ => return Err(self.stray_in_block(&tok, "the texture")),
                 },

@@ -70,8 +70,8 @@ pub fn transform_light(l: &mut Light, t: &Transform) {
 
 #[derive(Clone, Debug)]
 pub struct MacroDef {
-    pub name: Rc<str>,
-    pub params: Vec<(Rc<str>, bool)>,
+    pub name: super::super::syntax::Name,
+    pub params: Vec<(super::super::syntax::Name, bool)>,
     pub tokens: Rc<[Token]>,
     /// Token indices of the body: from after the parameter list to the closing `#end`.
     pub start: usize,
