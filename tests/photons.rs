@@ -14,6 +14,17 @@
 //!    deviated ray, at the rim, turns by 2 (90 - asin(1 / 1.2)) = 67 degrees, so it lands
 //!    within 3 units of the axis from a ball whose middle is 1.2 above the floor.)
 //!
+//! 3. A mirror's beam in scattering media (`photons { media }`): a cylinder light shines
+//!    down on a mirror at 45 degrees, whose beam crosses a large box of isotropic media
+//!    that scatter without dimming (`extinction 0`) sideways, under an orthographic camera
+//!    looking across it. What the media scatter from the beam equals what they scatter from
+//!    a parallel light shining the same way on the whole box, times the share of the view
+//!    and of the camera's path in the media the beam takes: it is 0.99 units high of the 3
+//!    seen, and crosses the camera's rays over z in [-1, 1] of the box's [-2.9, 2.9]; and
+//!    times 4/3, POV-Ray's convention for media photons (its image of this scene: 1.350
+//!    times that share of its image under the parallel light, at 10^6 photons; penumbra's
+//!    own direct light there is POV-Ray's, 23.20).
+//!
 //! The camera stands between the ball and the floor, so that it sees the floor and not the
 //! ball (`no_image` would not do: photons go through `no_image` objects, as in POV-Ray).
 //!
@@ -240,4 +251,53 @@ fn photons_are_the_same_for_any_thread_count_and_any_split() {
     let whole = part(0..8);
     assert_eq!(merged.pixels, whole.pixels);
     assert_eq!(merged.means(), one);
+}
+
+/// The mirror's beam: the cylinder light lights only the column above the mirror, so the
+/// media seen (x in [-5, -2]) get the beam's light alone. The box holding the media lets
+/// photons through (`pass_through`); its faces lie far from the beam and the view.
+const MEDIA_BEAM: &str = "#version 3.7;
+global_settings { assumed_gamma 1.0 max_trace_level 5 photons { count 100000 media 100 } }
+camera { orthographic location <-3.5, 0, 3> direction -z right x*3 up y*3 }
+light_source { <0, 10, 0> color rgb 20 cylinder point_at <0, 0, 0> radius 1.3 falloff 1.4 }
+box { <-6.9, -3, -2.9>, <3, 3, 2.9> hollow pigment { rgbt 1 } photons { pass_through }
+  interior { media { scattering { 1, 0.2 extinction 0 } method 2 intervals 10 samples 10 } } }
+box { <-0.7, -0.01, -1>, <0.7, 0, 1> rotate z*45 pigment { rgb 0 }
+  finish { ambient 0 diffuse 0 reflection 1 } photons { target reflection on } }
+plane { x, -7 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+plane { z, -3 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+";
+
+/// The same media under a parallel light shining as the beam does, everywhere.
+const MEDIA_LIT: &str = "#version 3.7;
+global_settings { assumed_gamma 1.0 max_trace_level 5 }
+camera { orthographic location <-3.5, 0, 3> direction -z right x*3 up y*3 }
+light_source { <100, 0, 0> color rgb 20 parallel point_at <0, 0, 0> }
+box { <-6.9, -3, -2.9>, <3, 3, 2.9> hollow pigment { rgbt 1 }
+  interior { media { scattering { 1, 0.2 extinction 0 } method 2 intervals 10 samples 10 } } }
+plane { x, -7 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+plane { z, -3 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+";
+
+#[test]
+fn media_scatter_a_mirror_beam_as_they_scatter_its_light() {
+    let (beam, se_beam) = replicate_mean(MEDIA_BEAM, 40, 32, |_, _, v| Some(v));
+    let (lit, se_lit) = replicate_mean(MEDIA_LIT, 40, 4, |_, _, v| Some(v));
+    // The beam's height: the mirror's face, 1.4 wide at 45 degrees.
+    let height = 1.4 * std::f64::consts::FRAC_1_SQRT_2;
+    let share = height / 3.0 * 2.0 / 5.8 * (4.0 / 3.0);
+    let expected = share * lit;
+    let se = se_beam.hypot(share * se_lit);
+    eprintln!(
+        "media beam: mean {beam:.5} (SE {se_beam:.5}), expected {expected:.5} (SE {:.5})",
+        share * se_lit
+    );
+    assert!(
+        se < 0.005 * expected,
+        "standard error {se} too large for the test"
+    );
+    assert!(
+        (beam - expected).abs() < T_7 * se,
+        "media beam {beam} (SE {se_beam}), expected {expected}"
+    );
 }

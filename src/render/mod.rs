@@ -705,7 +705,8 @@ fn render_pass(
         .photons
         .filter(|_| !scene.world.photon_targets().is_empty())
         .and_then(|_| {
-            photons::first_radius(&shooter.shoot_photons(0, RADIUS_SEED, PHOTONS_PER_PASS))
+            let shot = shooter.shoot_photons(0, RADIUS_SEED, PHOTONS_PER_PASS, false);
+            photons::first_radius(&shot.surface)
         });
     let Some(first_radius) = first_radius else {
         return render_indices(scene, options, plan, None, progress);
@@ -728,8 +729,12 @@ fn render_pass(
                 .clone()
                 .into_par_iter()
                 .map(|pass| {
-                    let shot = shooter.shoot_photons(pass, plan.seed(), PHOTONS_PER_PASS);
-                    photons::PhotonMap::new(shot, photons::pass_radius(first_radius, pass))
+                    let radius = photons::pass_radius(first_radius, pass);
+                    let shot = shooter.shoot_photons(pass, plan.seed(), PHOTONS_PER_PASS, true);
+                    photons::PassMaps {
+                        surface: photons::PhotonMap::new(shot.surface, radius),
+                        volume: photons::BeamMap::new(shot.volume, radius),
+                    }
                 })
                 .collect(),
         };

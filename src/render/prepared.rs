@@ -60,6 +60,10 @@ pub struct Material {
     pub inner: Option<u32>,
     /// How photons treat it (`photons { }`; the defaults where it has none).
     pub photons: crate::scene::ObjectPhotons,
+    /// A photon target photons meet (not `no_shadow` or `no_image`) in a scene with
+    /// photons: the shadow rays of some lights may stop here, as the photons bring their
+    /// light through it (`ObjectPhotons::stops_shadows`).
+    pub photon_shadow: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -122,6 +126,18 @@ impl PreparedScene {
             scene.settings.photons.is_some(),
             default_texture.clone(),
         );
+        let on = |f: fn(&crate::scene::LightPhotons) -> Option<bool>| {
+            scene
+                .lights
+                .iter()
+                .any(|l| f(&l.photons) == Some(true))
+                .then_some(true)
+        };
+        builder.photon_lights = crate::scene::LightPhotons {
+            refraction: on(|p| p.refraction),
+            reflection: on(|p| p.reflection),
+            ..Default::default()
+        };
         let default_interior = Interior::default();
         let looks = Looks::plain(&default_texture, &default_interior);
         let looks_like = scene.lights.iter().filter_map(|l| l.looks_like.as_deref());
@@ -217,6 +233,9 @@ struct Builder {
     media: MediaTable,
     /// Whether the scene computes caustics with photons (global_settings photons).
     photons: bool,
+    /// What some light's photons block turns on (`Some(true)`) for targets that say
+    /// nothing themselves (see [`crate::scene::ObjectPhotons::refracts`]).
+    photon_lights: crate::scene::LightPhotons,
     /// The texture of objects without one, by address: an instance inherits nothing only
     /// if its looks hold this one.
     default_texture: Arc<Texture>,
@@ -364,6 +383,7 @@ impl Builder {
             interior_ids: HashMap::new(),
             media,
             photons,
+            photon_lights: crate::scene::LightPhotons::default(),
             default_texture,
             prototypes: HashMap::new(),
             in_prototype: false,
@@ -425,12 +445,14 @@ impl Builder {
         };
         if top {
             self.world.add_top(item);
-            // A target that neither reflects nor refracts photons gets none (POV-Ray: photon
-            // time 0.000 s for such a scene), nor does one photons go through.
+            // A target that neither reflects nor refracts any light's photons gets none
+            // (POV-Ray: photon time 0.000 s for such a scene), nor does one photons go
+            // through.
+            let lights = &self.photon_lights;
             if self.photons
                 && !(f.no_shadow || f.no_image)
                 && f.photons
-                    .is_some_and(|p| p.target && (p.reflection || p.refraction))
+                    .is_some_and(|p| p.target && (p.reflects(lights) || p.refracts(lights)))
             {
                 self.world.add_photon_target(item);
             }
@@ -686,14 +708,17 @@ impl Builder {
         // the light that passes through it (measured: the shadow under a clear glass
         // target is black but for its caustic). Photons go through `no_shadow` and
         // `no_image` objects, and so does the light then (measured: a `no_image` glass
-        // target's shadow lets the light through, with no caustic).
+        // target's shadow lets the light through, with no caustic). Light by light
+        // (`ObjectPhotons::stops_shadows`): a light whose photons it does not refract keeps
+        // the filtered shadow (advanced/optics: the lenses under the light `photons {
+        // refraction off reflection off }`).
         let photons_meet = !(looks.flags.no_shadow || looks.flags.no_image);
-        let photons_refract = self.photons && photons.target && photons.refraction && photons_meet;
         self.materials.push(Material {
             texture: looks.texture.clone(),
             double_illuminate: looks.flags.double_illuminate,
-            transmits: may_transmit(looks.texture) && !photons_refract,
+            transmits: may_transmit(looks.texture),
             photons,
+            photon_shadow: self.photons && photons.target && photons_meet,
             // The media go to the scene's media table, once per interior.
             interior: with_finish_caustics(
                 Interior {

@@ -110,8 +110,8 @@ impl Evaluator<'_> {
                         }
                         p.target = true;
                     }
-                    "refraction" => p.refraction = ev.on_off()?,
-                    "reflection" => p.reflection = ev.on_off()?,
+                    "refraction" => p.refraction = Some(ev.on_off()?),
+                    "reflection" => p.reflection = Some(ev.on_off()?),
                     "collect" => p.no_collect = !ev.on_off()?,
                     "pass_through" => {
                         ev.next()?;
@@ -138,8 +138,8 @@ impl Evaluator<'_> {
             start,
             |ev, tok, p| {
                 match tok.ident().unwrap_or("") {
-                    "refraction" => p.no_refraction = !ev.on_off()?,
-                    "reflection" => p.no_reflection = !ev.on_off()?,
+                    "refraction" => p.refraction = Some(ev.on_off()?),
+                    "reflection" => p.reflection = Some(ev.on_off()?),
                     "area_light" => {
                         ev.next()?;
                         p.area_light = ev.optional_bool()?;

@@ -285,7 +285,8 @@ impl Integrator<'_> {
                 None => return DVec3::ZERO,
             },
         };
-        let filter = self.shadow_filter(&Ray::new(q.origin, l), distance * (1.0 - 1e-9), &q.inside);
+        let ray = Ray::new(q.origin, l);
+        let filter = self.shadow_filter(&ray, distance * (1.0 - 1e-9), q);
         if filter == DVec3::ZERO {
             return filter;
         }
@@ -383,8 +384,10 @@ impl Integrator<'_> {
 
     /// The fraction of light that reaches along a shadow ray: zero at an opaque object, and
     /// `C * filter + transmit` per crossing of a filtering one (no refraction), as POV-Ray.
-    /// `inside` holds the interiors the ray starts in: those of the ray that was shaded.
-    pub(super) fn shadow_filter(&self, ray: &Ray, t_max: f64, inside: &InteriorStack) -> DVec3 {
+    /// `q.inside` holds the interiors the ray starts in: those of the ray that was shaded.
+    fn shadow_filter(&self, ray: &Ray, t_max: f64, q: &ShadowQuery) -> DVec3 {
+        let inside = &q.inside;
+        let photons = &q.light.photons;
         let scene = self.scene;
         if !scene.any_transmitting {
             return if scene.world.occluded(ray, t_max) {
@@ -402,7 +405,9 @@ impl Integrator<'_> {
                 let back = scene.world.surface(ray, hit).normal.dot(ray.direction) > 0.0;
                 material = scene.side_material(index, back);
             }
-            if !material.transmits {
+            if !material.transmits
+                || material.photon_shadow && material.photons.stops_shadows(photons)
+            {
                 filter = DVec3::ZERO;
                 return false;
             }

@@ -248,6 +248,7 @@ mod tests {
             interior_id: 0,
             hollow: false,
             photons: Default::default(),
+            photon_shadow: false,
         };
         let measured = [1.3873, 1.4242, 1.4615, 1.5, 1.5394, 1.5807, 1.6219];
         for (i, m) in measured.iter().enumerate() {
