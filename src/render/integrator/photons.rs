@@ -265,7 +265,7 @@ impl Integrator<'_> {
     }
 
     /// Follows one photon from its light, storing it where it lands after a bounce, and
-    /// (with `beams`) its path through media that scatter after a bounce.
+    /// (with `beams` and `photons { media }`) its path through media that scatter.
     fn trace_photon(
         &self,
         mut ray: Ray,
@@ -304,21 +304,8 @@ impl Integrator<'_> {
                     direction: ray.direction.normalize(),
                     length: step,
                 };
-                let dimming = (&path.interiors, light.media_attenuation);
-                let (t, scatters) = self.photon_segment(&segment, dimming);
-                if scatters && path.level > 1 && light.lights_media {
-                    let extinction = -t.max(DVec3::splat(1e-30)).ln() / step;
-                    out.volume.push(PhotonBeam {
-                        origin: segment.origin.as_vec3().to_array(),
-                        direction: segment.direction.as_vec3().to_array(),
-                        length: step as f32,
-                        power: travel.power.as_vec3().to_array(),
-                        extinction: extinction.as_vec3().to_array(),
-                        travelled: travel.length as f32,
-                        light: light_index,
-                    });
-                }
-                travel.power *= t;
+                let from = (light, light_index, &path);
+                self.through_media(&segment, from, &mut travel, &mut out.volume);
             }
             travel.length += step;
             let s = self.shading(&ray, &hit, path);
@@ -345,6 +332,34 @@ impl Integrator<'_> {
             }
             ray = Ray::new(offset_point(s.surface.point, s.surface.normal, dir), dir);
         }
+    }
+
+    /// A photon's way along one straight segment of its path: the media there dim it,
+    /// and where an interior's media scatter (after its first bounce, from a light that
+    /// lights media) the segment is kept as a beam.
+    fn through_media(
+        &self,
+        segment: &Segment,
+        (light, light_index, path): (&PreparedLight, u32, &Path),
+        travel: &mut Travel,
+        beams: &mut Vec<PhotonBeam>,
+    ) {
+        let dimming = (&path.interiors, light.media_attenuation);
+        let (t, scatters) = self.photon_segment(segment, dimming);
+        let step = segment.length;
+        if scatters && path.level > 1 && light.lights_media && step > 0.0 {
+            let extinction = -t.max(DVec3::splat(1e-30)).ln() / step;
+            beams.push(PhotonBeam {
+                origin: segment.origin.as_vec3().to_array(),
+                direction: segment.direction.as_vec3().to_array(),
+                length: step as f32,
+                power: travel.power.as_vec3().to_array(),
+                extinction: extinction.as_vec3().to_array(),
+                travelled: travel.length as f32,
+                light: light_index,
+            });
+        }
+        travel.power *= t;
     }
 
     /// The branch a photon takes at a surface: its direction, the factor on its power
