@@ -220,8 +220,9 @@ pub struct PhotonBeam {
     pub length: f32,
     /// The light it carries as it starts, before its spread over its path's length.
     pub power: [f32; 3],
-    /// Per channel, the rate at which the media along it dim it (the beam's transmittance
-    /// over distance s is exp(-extinction s)).
+    /// Per channel, the rate at which the media along it dim it: its transmittance over
+    /// distance s is exp(-extinction s), the whole segment's spread evenly (exact where
+    /// the media are the same all along it).
     pub extinction: [f32; 3],
     /// How far its photon had come when it started, and from which light.
     pub travelled: f32,
