@@ -117,3 +117,51 @@ pub struct LightPhotons {
     /// `area_light`: photons start all over an area light, not at its centre.
     pub area_light: bool,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn object(target: bool, refraction: Option<bool>, reflection: Option<bool>) -> ObjectPhotons {
+        ObjectPhotons {
+            target,
+            refraction,
+            reflection,
+            ..Default::default()
+        }
+    }
+
+    fn light(refraction: Option<bool>, reflection: Option<bool>) -> LightPhotons {
+        LightPhotons {
+            refraction,
+            reflection,
+            ..Default::default()
+        }
+    }
+
+    /// The cases measured with POV-Ray (see `turned_on`), each as it was set up.
+    #[test]
+    fn photons_follow_povrays_measured_rules() {
+        let plain = light(None, None);
+        let both_on = light(Some(true), Some(true));
+        // A glass target with `refraction on` under a light without a block: refracts, and
+        // its shadow is black; under a light with `refraction off` neither.
+        let glass = object(true, Some(true), Some(false));
+        assert!(glass.refracts(&plain) && glass.stops_shadows(&plain));
+        let off = light(Some(false), Some(false));
+        assert!(!glass.refracts(&off) && !glass.stops_shadows(&off));
+        // A bare target mirror: no photons under a plain light, reflects under `reflection
+        // on`.
+        let bare = object(true, None, None);
+        assert!(!bare.reflects(&plain) && !bare.refracts(&plain));
+        assert!(bare.reflects(&light(None, Some(true))));
+        // A bare target box under a light with both on: photons pass, its shadow stays.
+        assert!(bare.refracts(&both_on) && !bare.stops_shadows(&both_on));
+        // An object without a block: reflects under the light's `on`, stops refraction.
+        let none = ObjectPhotons::default();
+        assert!(none.reflects(&both_on) && !none.refracts(&both_on));
+        // The object's own `off` wins over the light's `on`.
+        assert!(!object(false, None, Some(false)).reflects(&both_on));
+        assert!(!object(true, Some(false), None).refracts(&both_on));
+    }
+}

@@ -558,3 +558,27 @@ impl Evaluator<'_> {
         self.frames.last().map(|f| (f.tokens.clone(), f.file))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A scope found by a token's (interned) name and by any other copy of the same text:
+    /// the address is a shortcut, never the test.
+    #[test]
+    fn a_scope_finds_a_name_by_address_and_by_text() {
+        let mut scope = Scope::default();
+        scope.insert(Key::of("Radius"), Value::Float(2.0));
+        let interned = intern("Radius");
+        let copy = String::from("Radius");
+        assert!(!std::ptr::eq(interned, copy.as_str()));
+        for name in [interned, copy.as_str()] {
+            assert!(
+                matches!(scope.get(&NameRef(name)), Some(Value::Float(2.0))),
+                "{name}"
+            );
+        }
+        assert!(!scope.contains_key(&NameRef("Radiu")));
+        assert!(!scope.contains_key(&NameRef("radius")));
+    }
+}

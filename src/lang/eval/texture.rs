@@ -432,15 +432,13 @@ impl Evaluator<'_> {
                 continue;
             }
             let word = tok.ident();
-            // A colour keyword can only start a colour (keywords are never declared): the
-            // common `pigment { color ... }` skips the tests of patterns and names below.
-            if word.is_some_and(super::keywords::is_colour_keyword) {
-                let (c, _) = self.colour()?;
-                p = Pigment::solid(colour_of(c));
-                first = false;
-                continue;
-            }
             match word {
+                // A colour keyword can only start a colour (keywords are never declared):
+                // the common `pigment { color ... }` skips the tests of patterns and names.
+                Some(w) if super::keywords::is_colour_keyword(w) => {
+                    let (c, _) = self.colour()?;
+                    p = Pigment::solid(colour_of(c));
+                }
                 Some(w) if PATTERNS.contains(&w) && self.lookup(w).is_none() => {
                     p = self.pattern_pigment(w)?;
                 }
