@@ -870,22 +870,33 @@ impl World {
     /// Whether anything that casts shadows lies on the ray within (0, t_max); stops at the
     /// first hit.
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
-        if self
+        self.blocker(ray, t_max, None).is_some()
+    }
+
+    /// An item that casts a shadow on the ray within (0, t_max), if any: `hint` first (the
+    /// item that stopped a neighbouring shadow ray, as POV-Ray's shadow cache keeps one per
+    /// light), then the unbounded items and the tree. Whether the answer is `None` does not
+    /// depend on the hint, only how long it takes.
+    pub fn blocker(&self, ray: &Ray, t_max: f64, hint: Option<u32>) -> Option<u32> {
+        if let Some(i) = hint.filter(|&i| self.item_blocks(i, ray, t_max)) {
+            return Some(i);
+        }
+        if let Some(&i) = self
             .unbounded
             .iter()
-            .any(|&i| self.item_blocks(i, ray, t_max))
+            .find(|&&i| self.item_blocks(i, ray, t_max))
         {
-            return true;
+            return Some(i);
         }
-        let mut hit = false;
+        let mut found = None;
         self.bvh.traverse_any(ray, t_max, |i, t_cur| {
             if self.item_blocks(i, ray, t_cur) {
-                hit = true;
+                found = Some(i);
                 return None;
             }
             Some(t_cur)
         });
-        hit
+        found
     }
 
     /// Whether an item casts a shadow on the ray within (0, t_max).

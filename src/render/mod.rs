@@ -677,8 +677,13 @@ fn sample_camera_ray(
     }
     let sx = (x as f64 + u) / w as f64 - 0.5;
     let sy = 0.5 - (y as f64 + v) / h as f64;
-    sampler.set_dimension(layout.dimension(0, Purpose::Lens));
-    let lens = sampler.get_2d();
+    // A pinhole draws no lens point (its dimensions are fixed, so nothing later moves).
+    let lens = if scene.camera.aperture > 0.0 {
+        sampler.set_dimension(layout.dimension(0, Purpose::Lens));
+        sampler.get_2d()
+    } else {
+        (0.5, 0.5)
+    };
     camera_ray(&scene.camera, sx, sy, lens)
 }
 
@@ -700,15 +705,18 @@ fn render_pass(
     progress: &dyn Progress,
 ) -> PassOutput {
     let shooter = Integrator::new(scene, options);
-    let first_radius = scene
+    let first = scene
         .settings
         .photons
         .filter(|_| !scene.world.photon_targets().is_empty())
         .and_then(|_| {
-            let shot = shooter.shoot_photons(0, RADIUS_SEED, PHOTONS_PER_PASS, false);
-            photons::first_radius(&shot.surface)
+            let shot = shooter.shoot_photons(0, RADIUS_SEED, PHOTONS_PER_PASS);
+            let surface = photons::first_radius(&shot.surface);
+            let volume = photons::first_beam_radius(&shot.volume);
+            // A map that stays empty never uses its radius: the other's stands in.
+            Some((surface.or(volume)?, volume.or(surface)?))
         });
-    let Some(first_radius) = first_radius else {
+    let Some((first_surface, first_volume)) = first else {
         return render_indices(scene, options, plan, None, progress);
     };
     let span = plan.index_span();
@@ -729,11 +737,11 @@ fn render_pass(
                 .clone()
                 .into_par_iter()
                 .map(|pass| {
-                    let radius = photons::pass_radius(first_radius, pass);
-                    let shot = shooter.shoot_photons(pass, plan.seed(), PHOTONS_PER_PASS, true);
+                    let shot = shooter.shoot_photons(pass, plan.seed(), PHOTONS_PER_PASS);
+                    let radius = |first| photons::pass_radius(first, pass);
                     photons::PassMaps {
-                        surface: photons::PhotonMap::new(shot.surface, radius),
-                        volume: photons::BeamMap::new(shot.volume, radius),
+                        surface: photons::PhotonMap::new(shot.surface, radius(first_surface)),
+                        volume: photons::BeamMap::new(shot.volume, radius(first_volume)),
                     }
                 })
                 .collect(),

@@ -208,10 +208,9 @@ fn overlap_density(beams: &[Option<Beam>], own: usize, ray: &Ray, n: u32) -> f64
 
 impl Integrator<'_> {
     /// One pass's photons, about `count` shot in all, shared equally among the (light,
-    /// target) pairs; a pure function of (seed, pass). With `keep_beams` (and `photons { media
-    /// }`) the photons' paths through media that scatter are kept too, and the media dim
-    /// them.
-    pub fn shoot_photons(&self, pass: u32, seed: u64, count: u32, keep_beams: bool) -> Shot {
+    /// target) pairs; a pure function of (seed, pass). With `photons { media }` the photons'
+    /// paths through media that scatter are kept too, and the media dim them.
+    pub fn shoot_photons(&self, pass: u32, seed: u64, count: u32) -> Shot {
         let targets = self.scene.world.photon_targets();
         let lights: Vec<usize> = (0..self.scene.lights.len())
             .filter(|&i| {
@@ -256,7 +255,7 @@ impl Integrator<'_> {
                     let power = light_in / overlap_density(from, t, &ray, n);
                     if power != DVec3::ZERO {
                         let from_light = (light, l as u32, start);
-                        self.trace_photon(ray, power, from_light, keep_beams, &mut rng, &mut out);
+                        self.trace_photon(ray, power, from_light, &mut rng, &mut out);
                     }
                 }
             }
@@ -265,13 +264,12 @@ impl Integrator<'_> {
     }
 
     /// Follows one photon from its light, storing it where it lands after a bounce, and
-    /// (with `beams` and `photons { media }`) its path through media that scatter.
+    /// (with `photons { media }`) its path through media that scatter.
     fn trace_photon(
         &self,
         mut ray: Ray,
         power: DVec3,
         (light, light_index, start): (&PreparedLight, u32, InteriorStack),
-        beams: bool,
         rng: &mut Pcg32,
         out: &mut Shot,
     ) {
@@ -279,7 +277,7 @@ impl Integrator<'_> {
         let max_level = settings
             .max_trace_level
             .unwrap_or(self.scene.settings.max_trace_level);
-        let in_media = beams && settings.media.is_some();
+        let in_media = settings.media.is_some();
         // In media a `pass_through` object is met rather than skipped, so that the photon
         // knows when it enters or leaves the media such an object usually holds.
         let skip = if in_media {
