@@ -23,7 +23,8 @@
 //!    seen, and crosses the camera's rays over z in [-1, 1] of the box's [-2.9, 2.9]; and
 //!    times 4/3, POV-Ray's convention for media photons (its image of this scene: 1.350
 //!    times that share of its image under the parallel light, at 10^6 photons; penumbra's
-//!    own direct light there is POV-Ray's, 23.20).
+//!    own direct light there is POV-Ray's, 23.20). Through media that dim, the beam's light
+//!    is dimmed from surface to surface only, as POV-Ray's is (see the test).
 //!
 //! The camera stands between the ball and the floor, so that it sees the floor and not the
 //! ball (`no_image` would not do: photons go through `no_image` objects, as in POV-Ray).
@@ -364,5 +365,32 @@ fn media_scatter_a_mirror_beam_as_they_scatter_its_light() {
     assert!(
         (beam - expected).abs() < T_7 * se,
         "media beam {beam} (SE {se_beam}), expected {expected}"
+    );
+}
+
+/// The same beam through media that dim it (extinction 0.2). POV-Ray dims a photon from one
+/// surface to the next, not along the stretch whose media it lights (its image of this
+/// scene: 0.3103 times the undimmed one, the same near the mirror and far from it), so the
+/// beam's image is the undimmed one times what two ways through the media leave, each in
+/// closed form: the light's way down from the box's top (y = 3) to the mirror's face at
+/// height y, and the camera's way in from the box's face (z = 2.9) to the beam at depth z,
+/// y and z spread evenly over the face's height h and over [-1, 1]: exp(-0.2 (3 - y)) and
+/// exp(-0.2 (2.9 - z)) averaged, 0.5497 x 0.5636 = 0.3098.
+#[test]
+fn media_photons_are_dimmed_from_surface_to_surface() {
+    let dimmed = MEDIA_BEAM.replace("extinction 0", "extinction 1");
+    let (beam, se_beam) = replicate_mean(&dimmed, 40, 32, |_, _, v| Some(v));
+    let (clear, se_clear) = replicate_mean(MEDIA_BEAM, 40, 32, |_, _, v| Some(v));
+    let sinhc = |x: f64| x.sinh() / x;
+    let h = 1.4 * std::f64::consts::FRAC_1_SQRT_2;
+    let light = (-0.2f64 * 3.0).exp() * sinhc(0.2 * h / 2.0);
+    let camera = (-0.2f64 * 2.9).exp() * sinhc(0.2);
+    let expected = clear * light * camera;
+    let se = se_beam.hypot(light * camera * se_clear);
+    eprintln!("dimmed beam: mean {beam:.5} (SE {se_beam:.5}), expected {expected:.5}");
+    assert!(se < 0.005 * expected, "standard error {se} too large");
+    assert!(
+        (beam - expected).abs() < T_7 * se,
+        "dimmed beam {beam} (SE {se_beam}), expected {expected} (SE {se})"
     );
 }

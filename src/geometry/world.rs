@@ -1368,6 +1368,60 @@ mod tests {
         );
     }
 
+    /// A shadow ray's answer does not depend on the blocker it tries first: over random
+    /// segments through a cloud of spheres and a plane, with the hint left by the last
+    /// blocked ray (as the integrator keeps it), with a wrong one and with none, `blocker`
+    /// finds something exactly when `occluded` does, and what it finds does block.
+    #[test]
+    fn a_blocker_hint_changes_no_answer() {
+        let mut b = WorldBuilder::default();
+        let plane = b.primitive(
+            ShapeKind::Plane {
+                normal: DVec3::Y,
+                distance: -2.0,
+            },
+            &Transform::IDENTITY,
+            0,
+            0,
+        );
+        b.add_top(plane);
+        let mut uniform = crate::geometry::uniform_stream(0x2545_f491_4f6c_dd1d);
+        let mut next = move || uniform() * 2.0 - 1.0;
+        for _ in 0..200 {
+            let center = DVec3::new(next(), next(), next()) * 1.5;
+            let shape = ShapeKind::Sphere {
+                center,
+                radius: 0.15,
+            };
+            let item = b.primitive(shape, &Transform::IDENTITY, 0, 0);
+            b.add_top(item);
+        }
+        let w = b.build();
+        let (mut last, mut blocked) = (None, 0);
+        for _ in 0..20_000 {
+            let o = DVec3::new(next(), next(), next()) * 2.0;
+            let to = DVec3::new(next(), next(), next()) * 3.0 - o;
+            let ray = Ray::new(o, to.normalize_or(DVec3::Y));
+            let t = to.length();
+            let expected = w.occluded(&ray, t);
+            for hint in [last, Some(plane.0), None] {
+                let found = w.blocker(&ray, t, hint);
+                assert_eq!(found.is_some(), expected, "{ray:?} hint {hint:?}");
+                if let Some(i) = found {
+                    assert!(w.item_blocks(i, &ray, t));
+                }
+            }
+            if let Some(i) = w.blocker(&ray, t, last) {
+                last = Some(i);
+                blocked += 1;
+            }
+        }
+        assert!(
+            (2_000..18_000).contains(&blocked),
+            "{blocked} of 20,000 blocked"
+        );
+    }
+
     /// Boxes sharing their top face (advanced/pawns' 32 squares set into the board): rays
     /// from above see the one declared first, whichever order the squares and the board are
     /// declared in, wherever the tree puts them.

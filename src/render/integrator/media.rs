@@ -309,7 +309,7 @@ impl Integrator<'_> {
         let carried = |beam: &PhotonBeam, s: f64| {
             let light = &self.scene.lights[beam.light as usize];
             let travelled = f64::from(beam.travelled) + s;
-            beam.power_at(s) * super::photons::spread(light, travelled)
+            beam.power() * super::photons::spread(light, travelled)
         };
         map.in_scattered(at.p, at.d, carried, |c| {
             (at.active.ids().iter().zip(density))

@@ -338,9 +338,10 @@ impl Integrator<'_> {
         }
     }
 
-    /// A photon's way along one straight segment of its path: the media there dim it,
-    /// and where an interior's media scatter (after its first bounce, from a light that
-    /// lights media) the segment is kept as a beam.
+    /// A photon's way along one straight segment of its path: where an interior's media
+    /// scatter (after its first bounce, from a light that lights media) the segment is kept
+    /// as a beam carrying the photon's light as it starts, and the media dim the photon
+    /// over the whole segment for what lies beyond it, as POV-Ray does ([`PhotonBeam`]).
     fn through_media(
         &self,
         segment: &Segment,
@@ -352,13 +353,11 @@ impl Integrator<'_> {
         let (t, scatters) = self.photon_segment(segment, dimming);
         let step = segment.length;
         if scatters && path.level > 1 && light.lights_media && step > 0.0 {
-            let extinction = -t.max(DVec3::splat(1e-30)).ln() / step;
             beams.push(PhotonBeam {
                 origin: segment.origin.as_vec3().to_array(),
                 direction: segment.direction.as_vec3().to_array(),
                 length: step as f32,
                 power: travel.power.as_vec3().to_array(),
-                extinction: extinction.as_vec3().to_array(),
                 travelled: travel.length as f32,
                 light: light_index,
             });
