@@ -118,15 +118,13 @@ fn a_plane_mirror_caustic_is_the_mirror_image_light() {
     assert!(mean.abs() < T_7 * se, "mean difference {mean} (SE {se})");
 }
 
-/// A target's photons neither reflect nor refract unless told (POV-Ray shoots none at a
-/// plain `photons { target }`: photon time 0.000 s): the floor gets the light alone.
-#[test]
-fn a_target_without_reflection_on_gets_no_photons() {
+/// The largest difference between the floor seen and the light's own (no caustic), away
+/// from the mirror's foot.
+fn worst_off_direct_light(source: &str) -> f64 {
     let size = 48;
     let world = |p: usize| (p as f64 + 0.5) / size as f64 * 4.0 - 2.0;
-    let source = MIRROR.replace("target reflection on", "target");
-    let image = render(&source, &options(size, 4, 1, 2));
-    let worst = image
+    let image = render(source, &options(size, 4, 1, 2));
+    image
         .iter()
         .enumerate()
         .filter(|(i, _)| world(i % size) < 1.8)
@@ -134,8 +132,40 @@ fn a_target_without_reflection_on_gets_no_photons() {
             let (x, z) = (world(i % size), -world(i / size));
             (f64::from(c[0]) - 0.25 * 4.0 / (x * x + z * z + 16.0).sqrt()).abs()
         })
-        .fold(0.0, f64::max);
+        .fold(0.0, f64::max)
+}
+
+/// A target's photons neither reflect nor refract unless told (POV-Ray shoots none at a
+/// plain `photons { target }`: photon time 0.000 s): the floor gets the light alone.
+#[test]
+fn a_target_without_reflection_on_gets_no_photons() {
+    let worst = worst_off_direct_light(&MIRROR.replace("target reflection on", "target"));
     // The direct light varies by under 0.003 across a pixel; a caustic adds at least 0.17.
+    assert!(
+        worst < 0.01,
+        "a pixel differs from the direct light by {worst}"
+    );
+}
+
+/// Photons that have only gone straight through clear surfaces are on the light's own
+/// way, which its shadow rays light already: they light nothing (POV-Ray stores them and
+/// shows none). A clear target slab between the light and the floor, which photons cross
+/// under the light's `refraction on`: the floor gets the light alone, not twice.
+#[test]
+fn photons_that_have_not_turned_light_nothing() {
+    let slab = MIRROR
+        .replace(
+            "box { <2, 0, -3>, <2.2, 3, 3> pigment { rgb 0 }",
+            "box { <-3, 2, -3>, <3, 2.2, 3> pigment { rgbf 1 }",
+        )
+        .replace("reflection 1 }", "}")
+        .replace("target reflection on", "target")
+        .replace(
+            "color rgb 0.25 }",
+            "color rgb 0.25 photons { refraction on } }",
+        );
+    assert!(slab.contains("<-3, 2, -3>") && slab.contains("refraction on"));
+    let worst = worst_off_direct_light(&slab);
     assert!(
         worst < 0.01,
         "a pixel differs from the direct light by {worst}"

@@ -37,11 +37,18 @@ pub struct Shot {
     pub volume: Vec<PhotonBeam>,
 }
 
-/// Where a photon is on its path: how far it has come and the light it carries (before
-/// its spread over that length).
+/// Where a photon is on its path: how far it has come, the light it carries (before its
+/// spread over that length), and whether it has turned yet.
 struct Travel {
     length: f64,
     power: DVec3,
+    /// Reflected, or refracted through a change of index. Until then the photon is on
+    /// the light's own way, where shadow rays already bring its light (through clear and
+    /// filtering surfaces alike), so it lights nothing: POV-Ray stores such photons, and
+    /// its image shows none of them (a spotlight through a clear target box of media: the
+    /// image's mean 0.14246 without photons and 0.13696 with 240,148 media photons
+    /// stored; penumbra, lighting with them, 0.32597).
+    turned: bool,
 }
 
 /// What the light a photon carries becomes after `length` of path: point and spot lights
@@ -293,7 +300,11 @@ impl Integrator<'_> {
             wavelength: None,
             bounces: 0,
         };
-        let mut travel = Travel { length: 0.0, power };
+        let mut travel = Travel {
+            length: 0.0,
+            power,
+            turned: false,
+        };
         while let Some(hit) = self.scene.world.intersect(&ray, f64::INFINITY, path.skip) {
             let step = hit.t * ray.direction.length();
             if in_media {
@@ -318,7 +329,7 @@ impl Integrator<'_> {
             if path.level == 1 && !s.material.photons.target {
                 return;
             }
-            if path.level > 1 && !s.material.photons.no_collect {
+            if travel.turned && !s.material.photons.no_collect {
                 let carried = travel.power * spread(light, travel.length);
                 out.surface.push(Photon::new(s.surface.point, carried, s.d));
             }
@@ -329,6 +340,7 @@ impl Integrator<'_> {
                 return;
             };
             travel.power *= weight;
+            travel.turned |= dir != s.d;
             path.interiors = interiors;
             // Every surface met counts, a straight crossing too (measured: photons through
             // four clear slabs under a glass target stored once more per level added, up
@@ -339,7 +351,7 @@ impl Integrator<'_> {
     }
 
     /// A photon's way along one straight segment of its path: where an interior's media
-    /// scatter (after its first bounce, from a light that lights media) the segment is kept
+    /// scatter (once it has turned, from a light that lights media) the segment is kept
     /// as a beam carrying the photon's light as it starts, and the media dim the photon
     /// over the whole segment for what lies beyond it, as POV-Ray does ([`PhotonBeam`]).
     fn through_media(
@@ -352,7 +364,7 @@ impl Integrator<'_> {
         let dimming = (&path.interiors, light.media_attenuation);
         let (t, scatters) = self.photon_segment(segment, dimming);
         let step = segment.length;
-        if scatters && path.level > 1 && light.lights_media && step > 0.0 {
+        if scatters && travel.turned && light.lights_media && step > 0.0 {
             beams.push(PhotonBeam {
                 origin: segment.origin.as_vec3().to_array(),
                 direction: segment.direction.as_vec3().to_array(),
