@@ -184,28 +184,11 @@ pub fn pass_radius(first: f64, pass: u32) -> f64 {
 /// distance to their `FIRST_NEIGHBOURS`-th nearest neighbour; `None` with too few photons
 /// to tell.
 pub fn first_radius(photons: &[Photon]) -> Option<f64> {
-    if photons.len() <= FIRST_NEIGHBOURS {
-        return None;
-    }
-    let stride = (photons.len() / RADIUS_PROBES).max(1);
-    let mut radii: Vec<f64> = photons
-        .iter()
-        .step_by(stride)
-        .map(|probe| {
-            let mut d2: Vec<f32> = photons
-                .iter()
-                .map(|q| {
-                    let a = glam::Vec3::from_array(probe.position);
-                    (glam::Vec3::from_array(q.position) - a).length_squared()
-                })
-                .collect();
-            let (_, kth, _) = d2.select_nth_unstable_by(FIRST_NEIGHBOURS, f32::total_cmp);
-            f64::from(kth.sqrt())
-        })
-        .collect();
-    let mid = radii.len() / 2;
-    let (_, median, _) = radii.select_nth_unstable_by(mid, f64::total_cmp);
-    (*median > 0.0).then_some(*median)
+    median_kth_distance(photons.len(), |probe| {
+        let a = glam::Vec3::from_array(photons[probe].position);
+        let d2 = |q: &Photon| (glam::Vec3::from_array(q.position) - a).length_squared();
+        photons.iter().map(d2).collect()
+    })
 }
 
 /// The first pass's radius for beams in media: the median, over probes at the middles of
@@ -215,18 +198,27 @@ pub fn first_radius(photons: &[Photon]) -> Option<f64> {
 /// the surface's radius the media below media_caustic's ball were 2.4 times as noisy at 64
 /// samples.) `None` with too few.
 pub fn first_beam_radius(beams: &[PhotonBeam]) -> Option<f64> {
-    if beams.len() <= FIRST_NEIGHBOURS {
+    median_kth_distance(beams.len(), |probe| {
+        let b = &beams[probe];
+        let p = b.origin() + b.direction() * (0.5 * f64::from(b.length));
+        beams.iter().map(|q| q.distance_squared(p) as f32).collect()
+    })
+}
+
+/// Over [`RADIUS_PROBES`] of `n` items spread evenly, the median of the distance to each
+/// probe's `FIRST_NEIGHBOURS`-th nearest item (itself included, at 0), from the squared
+/// distances `d2(probe)` lists; `None` with too few items or a median of 0.
+fn median_kth_distance(n: usize, d2: impl Fn(usize) -> Vec<f32>) -> Option<f64> {
+    if n <= FIRST_NEIGHBOURS {
         return None;
     }
-    let stride = (beams.len() / RADIUS_PROBES).max(1);
-    let mut radii: Vec<f64> = beams
-        .iter()
+    let stride = (n / RADIUS_PROBES).max(1);
+    let mut radii: Vec<f64> = (0..n)
         .step_by(stride)
         .map(|probe| {
-            let p = probe.origin() + probe.direction() * (0.5 * f64::from(probe.length));
-            let mut d2: Vec<f64> = beams.iter().map(|b| b.distance_squared(p)).collect();
-            let (_, kth, _) = d2.select_nth_unstable_by(FIRST_NEIGHBOURS, f64::total_cmp);
-            kth.sqrt()
+            let mut d = d2(probe);
+            let (_, kth, _) = d.select_nth_unstable_by(FIRST_NEIGHBOURS, f32::total_cmp);
+            f64::from(kth.sqrt())
         })
         .collect();
     let mid = radii.len() / 2;

@@ -270,8 +270,9 @@ impl Integrator<'_> {
         out
     }
 
-    /// Follows one photon from its light, storing it where it lands after a bounce, and
-    /// (with `photons { media }`) its path through media that scatter.
+    /// Follows one photon from its light, storing it where it lands once it has turned
+    /// ([`Travel::turned`]), and (with `photons { media }`) its path through media that
+    /// scatter.
     fn trace_photon(
         &self,
         mut ray: Ray,
@@ -340,6 +341,7 @@ impl Integrator<'_> {
                 return;
             };
             travel.power *= weight;
+            // A straight crossing goes on along `s.d` exactly.
             travel.turned |= dir != s.d;
             path.interiors = interiors;
             // Every surface met counts, a straight crossing too (measured: photons through
