@@ -870,33 +870,22 @@ impl World {
     /// Whether anything that casts shadows lies on the ray within (0, t_max); stops at the
     /// first hit.
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
-        self.blocker(ray, t_max, None).is_some()
-    }
-
-    /// An item that casts a shadow on the ray within (0, t_max), if any: `hint` first (the
-    /// item that stopped a neighbouring shadow ray, as POV-Ray's shadow cache keeps one per
-    /// light), then the unbounded items and the tree. Whether the answer is `None` does not
-    /// depend on the hint, only how long it takes.
-    pub fn blocker(&self, ray: &Ray, t_max: f64, hint: Option<u32>) -> Option<u32> {
-        if let Some(i) = hint.filter(|&i| self.item_blocks(i, ray, t_max)) {
-            return Some(i);
-        }
-        if let Some(&i) = self
+        if self
             .unbounded
             .iter()
-            .find(|&&i| self.item_blocks(i, ray, t_max))
+            .any(|&i| self.item_blocks(i, ray, t_max))
         {
-            return Some(i);
+            return true;
         }
-        let mut found = None;
+        let mut hit = false;
         self.bvh.traverse_any(ray, t_max, |i, t_cur| {
             if self.item_blocks(i, ray, t_cur) {
-                found = Some(i);
+                hit = true;
                 return None;
             }
             Some(t_cur)
         });
-        found
+        hit
     }
 
     /// Whether an item casts a shadow on the ray within (0, t_max).
@@ -1365,60 +1354,6 @@ mod tests {
         assert!(
             hits > 5_000,
             "{hits} hits: the test would not see a difference"
-        );
-    }
-
-    /// A shadow ray's answer does not depend on the blocker it tries first: over random
-    /// segments through a cloud of spheres and a plane, with the hint left by the last
-    /// blocked ray (as the integrator keeps it), with a wrong one and with none, `blocker`
-    /// finds something exactly when `occluded` does, and what it finds does block.
-    #[test]
-    fn a_blocker_hint_changes_no_answer() {
-        let mut b = WorldBuilder::default();
-        let plane = b.primitive(
-            ShapeKind::Plane {
-                normal: DVec3::Y,
-                distance: -2.0,
-            },
-            &Transform::IDENTITY,
-            0,
-            0,
-        );
-        b.add_top(plane);
-        let mut uniform = crate::geometry::uniform_stream(0x2545_f491_4f6c_dd1d);
-        let mut next = move || uniform() * 2.0 - 1.0;
-        for _ in 0..200 {
-            let center = DVec3::new(next(), next(), next()) * 1.5;
-            let shape = ShapeKind::Sphere {
-                center,
-                radius: 0.15,
-            };
-            let item = b.primitive(shape, &Transform::IDENTITY, 0, 0);
-            b.add_top(item);
-        }
-        let w = b.build();
-        let (mut last, mut blocked) = (None, 0);
-        for _ in 0..20_000 {
-            let o = DVec3::new(next(), next(), next()) * 2.0;
-            let to = DVec3::new(next(), next(), next()) * 3.0 - o;
-            let ray = Ray::new(o, to.normalize_or(DVec3::Y));
-            let t = to.length();
-            let expected = w.occluded(&ray, t);
-            for hint in [last, Some(plane.0), None] {
-                let found = w.blocker(&ray, t, hint);
-                assert_eq!(found.is_some(), expected, "{ray:?} hint {hint:?}");
-                if let Some(i) = found {
-                    assert!(w.item_blocks(i, &ray, t));
-                }
-            }
-            if let Some(i) = w.blocker(&ray, t, last) {
-                last = Some(i);
-                blocked += 1;
-            }
-        }
-        assert!(
-            (2_000..18_000).contains(&blocked),
-            "{blocked} of 20,000 blocked"
         );
     }
 

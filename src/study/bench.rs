@@ -464,17 +464,14 @@ fn trace(world: &World, rays: usize, order: RayOrder) -> RayFigures {
     let camera = start.elapsed().as_secs_f64();
     let start = Instant::now();
     let mut blocked = 0usize;
-    // Shadow rays: as many as camera rays (hits reused round-robin), each trying first what
-    // stopped the last one stopped, as the renderer's do.
-    let mut hint = None;
+    // Shadow rays: as many as camera rays (hits reused round-robin).
     for i in 0..rays {
         let Some(&p) = points.get(i % points.len().max(1)) else {
             break;
         };
         let to = light - p;
         let dist = to.length();
-        if let Some(item) = world.blocker(&Ray::new(p, to / dist), dist, hint) {
-            hint = Some(item);
+        if world.occluded(&Ray::new(p, to / dist), dist) {
             blocked += 1;
         }
     }

@@ -2,8 +2,6 @@
 //! the diffuse term and the highlights, through shadow rays that filter through transparent
 //! objects as POV-Ray's do.
 
-use std::cell::Cell;
-
 use glam::DVec3;
 
 use crate::appearance::finish::{
@@ -32,18 +30,6 @@ const GOLDEN: f64 = 0.618_033_988_749_894_9;
 /// Crossings a shadow ray keeps track of; past this many, further ones neither fade nor
 /// are told apart from crossings at the same distance.
 const MAX_CROSSINGS: usize = 32;
-
-/// Lights whose last blocker a thread remembers; further lights share the slots.
-const BLOCKER_SLOTS: usize = 8;
-
-thread_local! {
-    /// Per light (slot), the item that last stopped one of this thread's shadow rays: the
-    /// next one towards that light tries it first, as POV-Ray's shadow cache does, since
-    /// neighbouring points are mostly shadowed by the same object. A hint only: whether a
-    /// ray is stopped never depends on it, so the image does not either.
-    static LAST_BLOCKER: Cell<[Option<u32>; BLOCKER_SLOTS]> =
-        const { Cell::new([None; BLOCKER_SLOTS]) };
-}
 
 /// One texture layer as the lights see it.
 #[derive(Clone, Copy, Debug)]
@@ -396,21 +382,6 @@ impl Integrator<'_> {
         sum / n as f64
     }
 
-    /// Whether an opaque object stops the shadow ray, trying first what last stopped one of
-    /// this thread's shadow rays towards the same light ([`LAST_BLOCKER`]).
-    fn blocked(&self, ray: &Ray, t_max: f64, light: u32) -> bool {
-        let slot = light as usize % BLOCKER_SLOTS;
-        LAST_BLOCKER.with(|cache| {
-            let mut hints = cache.get();
-            let found = self.scene.world.blocker(ray, t_max, hints[slot]);
-            if found.is_some() && found != hints[slot] {
-                hints[slot] = found;
-                cache.set(hints);
-            }
-            found.is_some()
-        })
-    }
-
     /// The fraction of light that reaches along a shadow ray: zero at an opaque object, and
     /// `C * filter + transmit` per crossing of a filtering one (no refraction), as POV-Ray.
     /// `q.inside` holds the interiors the ray starts in: those of the ray that was shaded.
@@ -419,7 +390,7 @@ impl Integrator<'_> {
         let photons = &q.light.photons;
         let scene = self.scene;
         if !scene.any_transmitting {
-            return if self.blocked(ray, t_max, q.index) {
+            return if scene.world.occluded(ray, t_max) {
                 DVec3::ZERO
             } else {
                 DVec3::ONE
