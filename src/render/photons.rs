@@ -446,18 +446,21 @@ mod tests {
         assert!((slope - (ALPHA - 1.0)).abs() < 0.01, "{slope}");
     }
 
+    /// A 100 x 100 grid of spacing 0.01 in the xz plane, in a shuffled order (7919 is prime
+    /// to 10^4), so that evenly strided probes (every 50th) fall in columns 13 and 63,
+    /// inside the grid, not on its edge where neighbours are fewer.
+    fn shuffled_grid() -> impl Iterator<Item = (f64, f64)> {
+        (0..10_000).map(|i| {
+            let j = (i * 7919 + 13) % 10_000;
+            ((j % 100) as f64 * 0.01, (j / 100) as f64 * 0.01)
+        })
+    }
+
     #[test]
     fn the_first_radius_holds_the_asked_neighbours() {
-        // A 100 x 100 grid of spacing 0.01: the k-th neighbour is about sqrt(k/pi) cells
-        // away. The photons are listed in a shuffled order (7919 is prime to 10^4), so the
-        // evenly strided probes (every 50th) fall in columns 13 and 63, inside the grid,
-        // not on its edge where neighbours are fewer.
-        let photons: Vec<Photon> = (0..10_000)
-            .map(|i| {
-                let j = (i * 7919 + 13) % 10_000;
-                let (x, z) = ((j % 100) as f64, (j / 100) as f64);
-                photon(DVec3::new(x, 0.0, z) * 0.01, 1.0)
-            })
+        // The k-th neighbour is about sqrt(k/pi) cells away.
+        let photons: Vec<Photon> = shuffled_grid()
+            .map(|(x, z)| photon(DVec3::new(x, 0.0, z), 1.0))
             .collect();
         let r = first_radius(&photons).expect("enough photons");
         let expected = 0.01 * (FIRST_NEIGHBOURS as f64 / std::f64::consts::PI).sqrt();
@@ -469,18 +472,14 @@ mod tests {
     /// beam's middle has its k-th nearest beam as far as the k-th nearest photon above.
     #[test]
     fn the_first_beam_radius_holds_the_asked_beams() {
-        let beams: Vec<PhotonBeam> = (0..10_000)
-            .map(|i| {
-                let j = (i * 7919 + 13) % 10_000;
-                let (x, z) = ((j % 100) as f32, (j / 100) as f32);
-                PhotonBeam {
-                    origin: [x * 0.01, -0.5, z * 0.01],
-                    direction: [0.0, 1.0, 0.0],
-                    length: 1.0,
-                    power: [1.0; 3],
-                    travelled: 0.0,
-                    light: 0,
-                }
+        let beams: Vec<PhotonBeam> = shuffled_grid()
+            .map(|(x, z)| PhotonBeam {
+                origin: [x as f32, -0.5, z as f32],
+                direction: [0.0, 1.0, 0.0],
+                length: 1.0,
+                power: [1.0; 3],
+                travelled: 0.0,
+                light: 0,
             })
             .collect();
         let r = first_beam_radius(&beams).expect("enough beams");
