@@ -311,8 +311,9 @@ impl BeamMap {
     /// (`carried`, which applies its spread) times its length inside the sphere, over the
     /// sphere's volume, is the fluence; `scatter(c)` gives the media's scattering
     /// coefficient times their phase function for a beam whose direction towards its light
-    /// makes cosine c with `d` (the convention of a light's incidence). Times
-    /// [`POVRAY_MEDIA_PHOTONS`], POV-Ray's convention.
+    /// makes cosine c with `d` (the convention of a light's incidence). This is the light
+    /// the beams carry, not POV-Ray's estimate of it, which is brighter by a factor that
+    /// depends on its settings and the scene (docs/differences.md, "Photons").
     pub fn in_scattered(
         &self,
         p: DVec3,
@@ -341,18 +342,9 @@ impl BeamMap {
             }
             false
         });
-        sum * POVRAY_MEDIA_PHOTONS / (4.0 / 3.0 * std::f64::consts::PI * r2 * self.radius)
+        sum / (4.0 / 3.0 * std::f64::consts::PI * r2 * self.radius)
     }
 }
-
-/// POV-Ray's media photons bring 4/3 of the light its media scatter from the same light
-/// shining directly (as if their gather divided by pi r^3, not a sphere's volume): a
-/// mirror's beam through a box of media that scatter without dimming, against a parallel
-/// light on the whole box, measured 1.350 times the share of the view the beam takes
-/// (10^6 photons, 60x60: the image mean 3.5655 against 23.203 x 0.11379; the beam's rows
-/// 10.63-10.76 against 8.00, 1.3375). penumbra follows it, so that its caustics in media
-/// converge to POV-Ray's.
-pub const POVRAY_MEDIA_PHOTONS: f64 = 4.0 / 3.0;
 
 /// One pass's photons: where they landed on surfaces, and (with `photons { media }`) their
 /// beams through media that scatter.
