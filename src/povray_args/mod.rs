@@ -457,9 +457,9 @@ impl Reader<'_> {
         let a = &mut s.animation;
         match option.setting {
             Setting::StartRow => s.window.start_row = Some(bound(value)?),
-            Setting::EndRow => s.window.end_row = Some(bound(value)?),
+            Setting::EndRow => s.window.end_row = Some(end_bound(value)?),
             Setting::StartColumn => s.window.start_column = Some(bound(value)?),
-            Setting::EndColumn => s.window.end_column = Some(bound(value)?),
+            Setting::EndColumn => s.window.end_column = Some(end_bound(value)?),
             Setting::Clock => a.clock = number(value)?,
             Setting::InitialFrame => a.initial_frame = integer(value)?,
             Setting::FinalFrame => a.final_frame = integer(value)?,
@@ -604,6 +604,16 @@ fn bound(value: &str) -> Result<Bound, String> {
         Ok(Bound::Fraction(x))
     } else {
         integer(value).map(Bound::Pixel)
+    }
+}
+
+/// An end row or column: as [`bound`], but POV-Ray reads a plain 1 there as the fraction
+/// 1.0, the whole image (measured: `+EC1` and `End_Row=1`, as advanced/benchmark's INI
+/// writes them, render every column and row; `+EC2` ends at column 2, `+SC1` starts at 1).
+fn end_bound(value: &str) -> Result<Bound, String> {
+    match bound(value)? {
+        Bound::Pixel(1) => Ok(Bound::Fraction(1.0)),
+        b => Ok(b),
     }
 }
 

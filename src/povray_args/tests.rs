@@ -145,6 +145,14 @@ fn windows_in_pixels_and_fractions() {
     let w = j.window.unwrap();
     assert_eq!((w.x, w.y), (9..30, 40..60));
     assert!(job::job(&read("s.pov +SR50 +ER10").unwrap()).is_err());
+    // A plain 1 ends at the last column or row, as in POV-Ray; 2 is a pixel.
+    let j = job::job(&read("s.pov +W100 +H80 +SC1 +EC1 +ER1").unwrap()).unwrap();
+    assert!(j.window.is_none_or(|w| (w.x, w.y) == (0..100, 0..80)));
+    let w = job::job(&read("s.pov +W100 +H80 +EC2").unwrap())
+        .unwrap()
+        .window
+        .unwrap();
+    assert_eq!((w.x, w.y), (0..2, 0..80));
 }
 
 #[test]

@@ -55,16 +55,24 @@ impl ShadedLayer<'_> {
         self.pigment.rgb * self.finish.radiosity_diffuse * self.att
     }
 
+    /// The same behind the surface, through `diffuse`'s second value.
+    pub(super) fn radiosity_albedo_back(&self) -> DVec3 {
+        self.pigment.rgb * self.finish.diffuse_back * self.att
+    }
+
     /// The light photons bring (irradiance `e`), shown as POV-Ray shows it: times the
     /// diffuse colour, as a light shining straight at the surface would be.
     pub(super) fn caustic(&self, e: DVec3) -> DVec3 {
         self.pigment.rgb * e * (self.finish.diffuse * self.att)
     }
 
-    /// The diffuse light from a light of colour `light` (already shadowed) at N.L `n_dot_l`.
-    pub(super) fn diffuse(&self, n_dot_l: f64, light: DVec3) -> DVec3 {
+    /// The diffuse light from a light of colour `light` (already shadowed) at N.L `n_dot_l`;
+    /// a light `behind` the surface shines through `diffuse`'s second value (POV-Ray 3.7's
+    /// backside illumination, measured: pigment x back value x cos^brilliance x opacity).
+    pub(super) fn diffuse(&self, n_dot_l: f64, light: DVec3, behind: bool) -> DVec3 {
         let f = self.finish;
-        let diffuse = diffuse_term(f.diffuse, f.brilliance, n_dot_l, self.att, f.crand);
+        let amount = if behind { f.diffuse_back } else { f.diffuse };
+        let diffuse = diffuse_term(amount, f.brilliance, n_dot_l, self.att, f.crand);
         self.pigment.rgb * light * diffuse
     }
 
@@ -87,8 +95,11 @@ pub(super) struct LightAt {
     pub n: DVec3,
     pub d: DVec3,
     pub l: DVec3,
-    /// N.L, made positive for a double-illuminated surface lit from behind.
+    /// N.L, made positive for a surface lit from behind.
     pub n_dot_l: f64,
+    /// Lit from behind through `diffuse`'s second value (a double-illuminated surface is
+    /// lit from behind as from the front, and is not `behind`).
+    pub behind: bool,
 }
 
 /// A shadow test from one shading point towards one light.
@@ -121,7 +132,9 @@ impl Integrator<'_> {
             if !LightGroup::lights(self.scene.lights[index].group, s.material.light_group) {
                 continue;
             }
-            let Some((at, mut light)) = self.light_arriving(s, index, sampler, counts) else {
+            let back_lit = layer.finish.diffuse_back != 0.0;
+            let Some((at, mut light)) = self.light_arriving(s, index, back_lit, sampler, counts)
+            else {
                 continue;
             };
             if let Some(irid) = &layer.finish.irid {
@@ -129,10 +142,11 @@ impl Integrator<'_> {
                 let n_dot_v = -at.n.dot(at.d);
                 light *= irid_factor(irid, wavelength, at.n_dot_l, n_dot_v, s.surface.point);
             }
-            colour += layer.diffuse(at.n_dot_l, light);
+            colour += layer.diffuse(at.n_dot_l, light, at.behind);
             // Radiosity rays see no highlights (measured: phong on a furnace's wall adds
-            // only what the camera sees of it).
+            // only what the camera sees of it), nor does light through the back.
             if !self.scene.lights[index].shadowless
+                && !at.behind
                 && s.path.bounces == 0
                 && let Some(h) = layer.highlight(&at, light)
             {
@@ -143,11 +157,13 @@ impl Integrator<'_> {
     }
 
     /// The geometry and the shadowed colour of light `index` at the shading point, or
-    /// `None` where it adds nothing.
+    /// `None` where it adds nothing. A light behind the surface counts where the surface
+    /// is double-illuminated or `back_lit` (its diffuse has a second value).
     fn light_arriving(
         &self,
         s: &Shading,
         index: usize,
+        back_lit: bool,
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> Option<(LightAt, DVec3)> {
@@ -155,12 +171,13 @@ impl Integrator<'_> {
         let incidence = self.incidence(s, light, index as u32, sampler)?;
         let l = incidence.l;
         let mut n_dot_l = s.n.dot(l);
-        // A double-illuminated surface lit from behind: its shadow ray starts on the
-        // light's side, or it would cross the surface it leaves.
+        // A surface lit from behind: its shadow ray starts on the light's side, or it
+        // would cross the surface it leaves.
         let mut origin = s.shadow_origin;
         let mut inside = s.path.interiors;
+        let behind = n_dot_l <= 0.0 && !s.material.double_illuminate;
         if n_dot_l <= 0.0 {
-            if !s.material.double_illuminate {
+            if behind && !back_lit {
                 return None;
             }
             n_dot_l = -n_dot_l;
@@ -192,6 +209,7 @@ impl Integrator<'_> {
             d: s.d,
             l,
             n_dot_l,
+            behind,
         };
         Some((at, colour))
     }
@@ -624,11 +642,24 @@ mod tests {
             diffuse: 0.6,
             ..Finish::default()
         };
-        let d = layer(&finish).diffuse(0.5, DVec3::new(1.0, 2.0, 0.0));
+        let d = layer(&finish).diffuse(0.5, DVec3::new(1.0, 2.0, 0.0), false);
         let expect = DVec3::new(0.5, 0.5, 0.0) * 0.6 * 0.5;
         assert!((d - expect).length() < 1e-12, "{d}");
         // Grazing or behind: nothing.
-        assert_eq!(layer(&finish).diffuse(0.0, DVec3::ONE), DVec3::ZERO);
+        assert_eq!(layer(&finish).diffuse(0.0, DVec3::ONE, false), DVec3::ZERO);
+    }
+
+    #[test]
+    fn light_behind_shines_through_the_back_value() {
+        let finish = Finish {
+            diffuse: 0.6,
+            diffuse_back: 0.3,
+            brilliance: 3.0,
+            ..Finish::default()
+        };
+        let d = layer(&finish).diffuse(0.5, DVec3::ONE, true);
+        let expect = DVec3::new(0.5, 0.25, 1.0) * 0.3 * 0.5f64.powi(3);
+        assert!((d - expect).length() < 1e-12, "{d}");
     }
 
     #[test]
@@ -660,6 +691,7 @@ mod tests {
             d,
             l,
             n_dot_l: n.dot(l),
+            behind: false,
         };
         let peak = layer(&finish).highlight(&at(mirror), DVec3::ONE).unwrap();
         assert!((peak - DVec3::ONE).length() < 1e-12, "{peak}");

@@ -385,7 +385,7 @@ impl<'a> Integrator<'a> {
         let mut through = DVec3::ONE;
         let mut top: Option<(Colour, &Finish)> = None;
         // What the layers together reflect diffusely, for radiosity.
-        let mut diffuse = DVec3::ZERO;
+        let mut diffuse = radiosity::Albedo::default();
         if self.quality < QUALITY_LIGHTING {
             // POV-Ray's quick colours: the pigment, fully lit.
             return layers.iter().next().map_or(DVec3::ZERO, |l| l.colour.rgb);
@@ -407,7 +407,8 @@ impl<'a> Integrator<'a> {
                 caustic = Some((b, e));
                 colour += through * shaded.caustic(e);
             }
-            diffuse += through * shaded.radiosity_albedo();
+            diffuse.front += through * shaded.radiosity_albedo();
+            diffuse.back += through * shaded.radiosity_albedo_back();
             top.get_or_insert((c, layer.finish));
             through *= c.rgb * c.filter + DVec3::splat(c.transmit);
             if through == DVec3::ZERO {
@@ -416,7 +417,7 @@ impl<'a> Integrator<'a> {
         }
         if let Some(radiosity) = &self.radiosity
             && s.path.bounces < radiosity.recursion_limit
-            && diffuse != DVec3::ZERO
+            && diffuse != radiosity::Albedo::default()
         {
             colour += self.gathered(s, radiosity, diffuse, sampler, counts);
         }
