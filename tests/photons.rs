@@ -246,6 +246,22 @@ fn a_lens_caustic_carries_what_enters_the_lens() {
     assert!(centre > 1.0, "caustic core {centre}");
 }
 
+/// The same lens over a floor seen from below and lit through `diffuse 0, 0.5`: the light
+/// and the caustic arrive behind the surface, and both show through the second value.
+/// (POV-Ray shows such a caustic too, but 4 times as bright as the same caustic seen from
+/// the front: docs/differences.md.)
+#[test]
+fn a_caustic_behind_a_surface_shows_through_the_back_value() {
+    let below = LENS
+        .replace(
+            "location <0, 0.1, 0> direction -y",
+            "location <0, -0.1, 0> direction y",
+        )
+        .replace("diffuse 0.5 }", "diffuse 0, 0.5 }");
+    assert_ne!(below, LENS);
+    assert_the_floor_keeps_its_mean(&below, "lens over a floor seen from below");
+}
+
 /// A second target whose beam holds the lens's: a matte ring round the view (its shadow
 /// falls outside it) that takes no photon itself. Photons of the ring's beam that meet the
 /// lens land in its caustic too; the lens's light must still be counted once (each photon

@@ -61,9 +61,15 @@ impl ShadedLayer<'_> {
     }
 
     /// The light photons bring (irradiance `e`), shown as POV-Ray shows it: times the
-    /// diffuse colour, as a light shining straight at the surface would be.
-    pub(super) fn caustic(&self, e: DVec3) -> DVec3 {
-        self.pigment.rgb * e * (self.finish.diffuse * self.att)
+    /// diffuse colour, as a light shining straight at the surface would be; photons that
+    /// arrive from `behind` through `diffuse`'s second value.
+    pub(super) fn caustic(&self, e: DVec3, behind: bool) -> DVec3 {
+        let amount = if behind {
+            self.finish.diffuse_back
+        } else {
+            self.finish.diffuse
+        };
+        self.pigment.rgb * e * (amount * self.att)
     }
 
     /// The diffuse light from a light of colour `light` (already shadowed) at N.L `n_dot_l`;

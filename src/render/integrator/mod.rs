@@ -402,10 +402,14 @@ impl<'a> Integrator<'a> {
                 let b = layer.finish.brilliance;
                 let e = match caustic {
                     Some((cb, e)) if cb == b => e,
-                    _ => self.caustic(s, sampler.index(), b),
+                    _ => self.caustic(s, sampler.index(), b, false),
                 };
                 caustic = Some((b, e));
-                colour += through * shaded.caustic(e);
+                colour += through * shaded.caustic(e, false);
+            }
+            if self.photons.is_some() && shaded.finish.diffuse_back * shaded.att != 0.0 {
+                let e = self.caustic(s, sampler.index(), layer.finish.brilliance, true);
+                colour += through * shaded.caustic(e, true);
             }
             diffuse.front += through * shaded.radiosity_albedo();
             diffuse.back += through * shaded.radiosity_albedo_back();

@@ -416,13 +416,14 @@ impl Integrator<'_> {
         })
     }
 
-    /// What this sample's photon pass brings to the shaded point (irradiance).
-    pub(super) fn caustic(&self, s: &Shading, index: u32, brilliance: f64) -> DVec3 {
+    /// What this sample's photon pass brings to the shaded point (irradiance) on the
+    /// viewer's side, or from `behind`.
+    pub(super) fn caustic(&self, s: &Shading, index: u32, brilliance: f64, behind: bool) -> DVec3 {
         let Some(maps) = self.photons.and_then(|m| m.pass(index)) else {
             return DVec3::ZERO;
         };
-        maps.surface
-            .irradiance(s.surface.point, s.facing, brilliance)
+        let facing = if behind { -s.facing } else { s.facing };
+        maps.surface.irradiance(s.surface.point, facing, brilliance)
     }
 
     /// The top layer's pigment and finish and what the layers let through, as `shade`
