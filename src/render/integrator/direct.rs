@@ -64,12 +64,16 @@ impl ShadedLayer<'_> {
     /// diffuse colour, as a light shining straight at the surface would be; photons that
     /// arrive from `behind` through `diffuse`'s second value.
     pub(super) fn caustic(&self, e: DVec3, behind: bool) -> DVec3 {
-        let amount = if behind {
+        self.pigment.rgb * e * (self.diffuse_value(behind) * self.att)
+    }
+
+    /// `diffuse`'s first value, or its second for light arriving from behind.
+    fn diffuse_value(&self, behind: bool) -> f64 {
+        if behind {
             self.finish.diffuse_back
         } else {
             self.finish.diffuse
-        };
-        self.pigment.rgb * e * (amount * self.att)
+        }
     }
 
     /// The diffuse light from a light of colour `light` (already shadowed) at N.L `n_dot_l`;
@@ -77,7 +81,7 @@ impl ShadedLayer<'_> {
     /// backside illumination, measured: pigment x back value x cos^brilliance x opacity).
     pub(super) fn diffuse(&self, n_dot_l: f64, light: DVec3, behind: bool) -> DVec3 {
         let f = self.finish;
-        let amount = if behind { f.diffuse_back } else { f.diffuse };
+        let amount = self.diffuse_value(behind);
         let diffuse = diffuse_term(amount, f.brilliance, n_dot_l, self.att, f.crand);
         self.pigment.rgb * light * diffuse
     }
