@@ -284,3 +284,46 @@ sphere { <0, 1.5, 0>, 0.5 pigment { rgbf 1 } finish { ambient 0 diffuse 0 } no_i
     let got = shadowed_floor(nested, "<0, 1000, 0> color rgb 1", "<0, 0, 0>");
     assert_faded(got, 1.0, 1.5, 1e-3);
 }
+
+/// A scene computed in gamma space decodes each sample before it is averaged, so its tree
+/// ends as POV-Ray's does (a branch below adc_bailout is dropped), not by roulette, whose
+/// noise the decoding would turn into brightness: a plane of transmit t before an emitter
+/// of 1 under assumed_gamma 2.2 reads t^2.2 in POV-Ray (0.0000398 at t = 0.01; roulette
+/// gave 0.00064) and 0 below adc_bailout (t = 0.003); the fixed-point film rounds at 1e-4
+/// of it here.
+#[test]
+fn gamma_space_trees_end_at_adc_bailout() {
+    for (t, want) in [(0.01f64, 0.01f64.powf(2.2)), (0.003, 0.0)] {
+        let source = format!(
+            "#version 3.7;
+global_settings {{ assumed_gamma 2.2 }}
+camera {{ orthographic location <0, 0, -5> look_at 0 right x*2 up y*2 }}
+plane {{ z, 0 pigment {{ rgbt <1, 1, 1, {t}> }} finish {{ ambient 0 diffuse 0.5 }} }}
+plane {{ z, 3 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 0 emission 1 }} }}
+"
+        );
+        let options = LoadOptions {
+            image_width: 8,
+            image_height: 8,
+            ..LoadOptions::default()
+        };
+        let scene = match load_scene_source("gamma.pov", &source, &options) {
+            Ok(l) => l.scene,
+            Err(d) => panic!("{d}"),
+        };
+        let render = RenderOptions {
+            width: 8,
+            height: 8,
+            samples_per_pixel: 4,
+            ..RenderOptions::default()
+        };
+        let image = replicates(&scene, &render, 1, 1).remove(0);
+        for i in 0..64 {
+            let v = f64::from(image.get(i % 8, i / 8)[0]);
+            assert!(
+                (v - want).abs() <= 1e-3 * want,
+                "transmit {t}: pixel {i} reads {v}, POV-Ray's {want}"
+            );
+        }
+    }
+}

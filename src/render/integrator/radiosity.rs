@@ -52,7 +52,7 @@ impl Integrator<'_> {
         if carried == 0.0 {
             return DVec3::ZERO;
         }
-        let q = if s.path.bounces == 0 || !self.roulette {
+        let q = if s.path.bounces == 0 || self.termination != super::Termination::Roulette {
             1.0
         } else {
             carried.clamp(ROULETTE_MIN_Q, 1.0)
