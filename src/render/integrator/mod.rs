@@ -3,7 +3,8 @@
 //! filtering objects, mirror reflection, refraction) with stochastic changes that keep
 //! POV-Ray's expectation: area-light visibility is estimated from one grid point drawn with
 //! POV-Ray's weights, the deterministic adc_bailout cut is replaced by Russian roulette
-//! (expectation: the max_trace_level-capped tree), and where a surface both reflects and
+//! (expectation: the max_trace_level-capped tree; not in gamma-space scenes, see
+//! [`Termination`]), and where a surface both reflects and
 //! refracts, one branch may be chosen at random in proportion to its weight.
 
 //!
