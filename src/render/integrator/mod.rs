@@ -4,7 +4,7 @@
 //! POV-Ray's expectation: area-light visibility is estimated from one grid point drawn with
 //! POV-Ray's weights, the deterministic adc_bailout cut is replaced by Russian roulette
 //! (expectation: the max_trace_level-capped tree; not in gamma-space scenes, see
-//! [`Termination`]), and where a surface both reflects and
+//! `Termination`), and where a surface both reflects and
 //! refracts, one branch may be chosen at random in proportion to its weight.
 
 //!
