@@ -44,10 +44,11 @@ struct Travel {
     power: DVec3,
     /// Reflected, or refracted through a change of index. Until then the photon is on
     /// the light's own way, where shadow rays already bring its light (through clear and
-    /// filtering surfaces alike), so it lights nothing: POV-Ray stores such photons, and
-    /// its image shows none of them (a spotlight through a clear target box of media: the
-    /// image's mean 0.14246 without photons and 0.13696 with 240,148 media photons
-    /// stored; penumbra, lighting with them, 0.32597).
+    /// filtering surfaces alike), so it lights nothing. POV-Ray lights with such photons in
+    /// place of the direct light instead: the same light in expectation, blurred by its
+    /// gather (a spotlight through a clear target box of media: the image's mean 0.14246
+    /// without photons and 0.13696 with 240,148 media photons stored; penumbra, lighting
+    /// with them and the direct light both, gave 0.32597).
     turned: bool,
 }
 
