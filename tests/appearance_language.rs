@@ -25,10 +25,7 @@ fn layered_textures_stack_top_last_written() {
          texture { pigment { rgbt <0,0,1,0.5> } } }",
     );
     let t = s.objects[0].texture.as_ref().expect("texture");
-    let layers: Vec<_> = texture_layers(t, DVec3::ZERO)
-        .iter()
-        .map(|l| l.colour)
-        .collect();
+    let layers: Vec<_> = texture_layers(t, DVec3::ZERO).map(|l| l.colour).collect();
     assert_eq!(layers.len(), 2);
     assert_eq!(layers[0].rgb, DVec3::new(0.0, 0.0, 1.0));
     assert_eq!(layers[0].transmit, 0.5);
@@ -44,8 +41,11 @@ fn texture_map_entries_are_texture_bodies() {
     );
     // tests/lang/textures/texture_map_entries.pov checks the entries; here, their blend.
     let t = s.objects[0].texture.as_ref().expect("texture");
-    let c = texture_layers(t, DVec3::new(0.5, 0.0, 0.0));
-    let c = c.iter().next().expect("a layer").colour.rgb;
+    let c = texture_layers(t, DVec3::new(0.5, 0.0, 0.0))
+        .next()
+        .expect("a layer")
+        .colour
+        .rgb;
     assert!((c - DVec3::new(0.5, 0.0, 0.5)).length() < 1e-4, "{c}");
 }
 
@@ -58,12 +58,7 @@ fn list_patterns_take_texture_entries() {
     );
     let colour = |object: usize, p: DVec3| {
         let t = s.objects[object].texture.as_ref().expect("texture");
-        texture_layers(t, p)
-            .iter()
-            .next()
-            .expect("a layer")
-            .colour
-            .rgb
+        texture_layers(t, p).next().expect("a layer").colour.rgb
     };
     // Checker: the cube at the origin takes the first entry, its neighbour the second.
     assert_eq!(
@@ -89,7 +84,7 @@ fn average_weighs_its_pigment_map_entries() {
     );
     let colour = |object: usize, p: DVec3| {
         let t = s.objects[object].texture.as_ref().expect("texture");
-        texture_layers(t, p).iter().next().expect("a layer").colour
+        texture_layers(t, p).next().expect("a layer").colour
     };
     let c = colour(0, DVec3::ZERO);
     assert_eq!(c.rgb, DVec3::new(0.25, 0.0, 0.75));
@@ -142,8 +137,8 @@ fn degenerate_patterns_give_finite_colours() {
     );
     for o in &s.objects {
         let t = o.texture.as_ref().expect("t");
-        let c = texture_layers(t, DVec3::new(0.3, 0.4, 0.5));
-        assert!(c.iter().all(|l| l.colour.rgb.is_finite()));
+        let mut c = texture_layers(t, DVec3::new(0.3, 0.4, 0.5));
+        assert!(c.all(|l| l.colour.rgb.is_finite()));
     }
 }
 
@@ -158,8 +153,8 @@ fn a_transform_before_the_texture_map_moves_its_entries_too() {
     );
     let grey = |object: usize, x: f64| {
         let t = s.objects[object].texture.as_ref().expect("texture");
-        let layers = texture_layers(t, DVec3::new(x, 0.3, 0.0));
-        layers.iter().next().expect("a layer").colour.rgb.x
+        let mut layers = texture_layers(t, DVec3::new(x, 0.3, 0.0));
+        layers.next().expect("a layer").colour.rgb.x
     };
     for x in [0.5, 1.0, 2.0, 3.0] {
         assert!((grey(0, x) - x / 4.0).abs() < 1e-9, "{x}: {}", grey(0, x));
@@ -180,13 +175,7 @@ fn slope_reads_the_normal_and_the_altitude() {
             uv: glam::DVec2::ZERO,
             normal: n,
         };
-        texture_layers(t, p)
-            .iter()
-            .next()
-            .expect("a layer")
-            .colour
-            .rgb
-            .x
+        texture_layers(t, p).next().expect("a layer").colour.rgb.x
     };
     // POV-Ray: (3 (0.5 + asin(n.y) / pi) + (y + 1) / 2) / 4.
     let n = DVec3::new(0.6, 0.8, 0.0);

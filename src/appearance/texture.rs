@@ -13,49 +13,45 @@ use super::noise::lattice_hash;
 use super::normal::perturb;
 use super::pattern::pattern_value_at;
 
-/// At most this many layers are shaded; POV-Ray scenes rarely stack more than a few.
-pub const MAX_LAYERS: usize = 8;
-
 #[derive(Clone, Copy, Debug)]
 pub struct Layer<'a> {
     pub colour: Colour,
     pub finish: &'a Finish,
 }
 
-/// A fixed-capacity list, so resolving a texture allocates nothing per ray.
+/// A texture's layers at one point, top first, each resolved when the shader reaches it:
+/// nothing is allocated or copied per ray, and layers under an opaque one are never
+/// evaluated. (An array of resolved layers, 392 bytes, cost 5% of a checker render in
+/// copies.)
 #[derive(Clone, Copy, Debug)]
-pub struct Layers<'a> {
-    layers: [Option<Layer<'a>>; MAX_LAYERS],
-    len: usize,
+pub enum Layers<'a> {
+    /// A texture and its `below` list; `next` counts the layers already given.
+    Texture {
+        texture: &'a Texture,
+        at: TexturePoint,
+        next: usize,
+    },
+    /// A single resolved layer (a blend's), or none.
+    One(Option<Layer<'a>>),
 }
 
-impl<'a> Default for Layers<'a> {
-    fn default() -> Self {
-        Layers {
-            layers: [None; MAX_LAYERS],
-            len: 0,
+impl<'a> Iterator for Layers<'a> {
+    type Item = Layer<'a>;
+
+    fn next(&mut self) -> Option<Layer<'a>> {
+        match self {
+            Layers::One(layer) => layer.take(),
+            Layers::Texture { texture, at, next } => loop {
+                let t = match *next {
+                    0 => *texture,
+                    i => texture.below.get(i - 1)?,
+                };
+                *next += 1;
+                if let Some(layer) = texture_layer(t, *at, 0) {
+                    return Some(layer);
+                }
+            },
         }
-    }
-}
-
-impl<'a> Layers<'a> {
-    pub fn push(&mut self, layer: Layer<'a>) {
-        if self.len < MAX_LAYERS {
-            self.layers[self.len] = Some(layer);
-            self.len += 1;
-        }
-    }
-
-    pub fn iter(&self) -> impl Iterator<Item = &Layer<'a>> {
-        self.layers[..self.len].iter().flatten()
-    }
-
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
     }
 }
 
@@ -64,13 +60,11 @@ impl<'a> Layers<'a> {
 /// entries the colours blend and the finish of the nearer entry is used (exact when the
 /// entries share a finish, which is how texture maps are mostly written).
 pub fn texture_layers<'a>(texture: &'a Texture, at: impl Into<TexturePoint>) -> Layers<'a> {
-    let p = at.into();
-    let mut layers = Layers::default();
-    push_texture(&mut layers, texture, p, 0);
-    for below in &texture.below {
-        push_texture(&mut layers, below, p, 0);
+    Layers::Texture {
+        texture,
+        at: at.into(),
+        next: 0,
     }
-    layers
 }
 
 /// A surface that mixes textures (a mesh face with a texture per corner, a blob with
@@ -86,8 +80,7 @@ pub fn blended_layers<'a>(
     let mut total = 0.0;
     let mut finish: Option<(&Finish, f64)> = None;
     for (t, w) in textures {
-        let layers = texture_layers(t, p);
-        let Some(top) = layers.iter().next() else {
+        let Some(top) = texture_layers(t, p).next() else {
             continue;
         };
         colour.rgb += top.colour.rgb * w;
@@ -98,57 +91,45 @@ pub fn blended_layers<'a>(
             finish = Some((top.finish, w));
         }
     }
-    let mut out = Layers::default();
-    if let Some((finish, _)) = finish
-        && total > 0.0
-    {
+    let finish = finish.filter(|_| total > 0.0).map(|(f, _)| f);
+    Layers::One(finish.map(|finish| {
         colour.rgb /= total;
         colour.filter /= total;
         colour.transmit /= total;
-        out.push(Layer { colour, finish });
-    }
-    out
+        Layer { colour, finish }
+    }))
 }
 
 /// Texture maps nest; beyond this depth a texture shows its own pigment.
 const MAX_NESTING: u32 = 8;
 
-fn push_texture<'a>(layers: &mut Layers<'a>, t: &'a Texture, p: TexturePoint, depth: u32) {
-    if let Some(map) = &t.map
-        && depth < MAX_NESTING
-    {
-        if matches!(map.pattern.kind, PatternKind::Average) {
-            if let Some(i) = average_pick(map, p.world) {
-                push_texture(layers, &map.entries[i].1, p, depth + 1);
-            }
-            return;
-        }
-        let q = map.transform.inverse_point(map_point(map, p));
-        let v = pattern_value_at(&map.pattern, q, p.normal);
-        match blend_position(&map.entries, v, |e| e.0) {
-            Blend::One(i) => push_texture(layers, &map.entries[i].1, p, depth + 1),
-            Blend::Two(i, w) => {
-                let (a, b) = (&map.entries[i].1, &map.entries[i + 1].1);
-                let mut top_a = Layers::default();
-                push_texture(&mut top_a, a, p, depth + 1);
-                let mut top_b = Layers::default();
-                push_texture(&mut top_b, b, p, depth + 1);
-                let (Some(la), Some(lb)) = (top_a.iter().next(), top_b.iter().next()) else {
-                    return;
-                };
-                layers.push(Layer {
-                    colour: mix(&la.colour, &lb.colour, w),
-                    finish: if w < 0.5 { la.finish } else { lb.finish },
-                });
-            }
-            Blend::None => {}
-        }
-        return;
+/// One texture's own layer at the point (a texture map's entry there, or two entries'
+/// blend); `None` where a map has no entry at the point.
+fn texture_layer<'a>(t: &'a Texture, p: TexturePoint, depth: u32) -> Option<Layer<'a>> {
+    let Some(map) = t.map.as_ref().filter(|_| depth < MAX_NESTING) else {
+        return Some(Layer {
+            colour: evaluate_pigment(&t.pigment, p),
+            finish: &t.finish,
+        });
+    };
+    if matches!(map.pattern.kind, PatternKind::Average) {
+        let i = average_pick(map, p.world)?;
+        return texture_layer(&map.entries[i].1, p, depth + 1);
     }
-    layers.push(Layer {
-        colour: evaluate_pigment(&t.pigment, p),
-        finish: &t.finish,
-    });
+    let q = map.transform.inverse_point(map_point(map, p));
+    let v = pattern_value_at(&map.pattern, q, p.normal);
+    match blend_position(&map.entries, v, |e| e.0) {
+        Blend::One(i) => texture_layer(&map.entries[i].1, p, depth + 1),
+        Blend::Two(i, w) => {
+            let la = texture_layer(&map.entries[i].1, p, depth + 1)?;
+            let lb = texture_layer(&map.entries[i + 1].1, p, depth + 1)?;
+            Some(Layer {
+                colour: mix(&la.colour, &lb.colour, w),
+                finish: if w < 0.5 { la.finish } else { lb.finish },
+            })
+        }
+        Blend::None => None,
+    }
 }
 
 /// The shading normal after the texture's normal perturbation: `n` is the unit normal
@@ -269,8 +250,9 @@ mod tests {
             ..Texture::default()
         };
         let l = texture_layers(&t, DVec3::new(0.25, 0.0, 0.0));
+        let l: Vec<_> = l.collect();
         assert_eq!(l.len(), 1);
-        let c = l.iter().next().unwrap().colour.rgb;
+        let c = l[0].colour.rgb;
         assert!((c - DVec3::new(0.75, 0.0, 0.25)).length() < 1e-9);
         assert!(!may_transmit(&t));
     }
@@ -289,10 +271,27 @@ mod tests {
             ..Texture::default()
         };
         let l = texture_layers(&top, DVec3::ZERO);
-        let v: Vec<_> = l.iter().map(|x| x.colour).collect();
+        let v: Vec<_> = l.map(|x| x.colour).collect();
         assert_eq!(v.len(), 2);
         assert_eq!(v[0], clear);
         assert_eq!(v[1].rgb, DVec3::new(0.0, 1.0, 0.0));
         assert!(may_transmit(&top));
+    }
+
+    #[test]
+    fn every_layer_is_given_however_many() {
+        // POV-Ray sets no limit on layered textures; an earlier fixed array kept eight.
+        let layer = |g: f64| Texture {
+            pigment: Pigment::solid(Colour::rgb(0.0, g, 0.0)),
+            ..Texture::default()
+        };
+        let top = Texture {
+            below: (1..12).map(|i| layer(f64::from(i))).collect(),
+            ..layer(0.0)
+        };
+        let greens: Vec<f64> = texture_layers(&top, DVec3::ZERO)
+            .map(|l| l.colour.rgb.y)
+            .collect();
+        assert_eq!(greens, (0..12).map(f64::from).collect::<Vec<_>>());
     }
 }

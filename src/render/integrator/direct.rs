@@ -447,7 +447,7 @@ impl Integrator<'_> {
                 return true;
             }
             let at = scene.world.texture_point(ray, hit);
-            for layer in texture_layers(&material.texture, at).iter() {
+            for layer in texture_layers(&material.texture, at) {
                 let c = layer.colour;
                 filter *= c.rgb * c.filter + DVec3::splat(c.transmit);
             }

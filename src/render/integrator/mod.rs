@@ -398,7 +398,7 @@ impl<'a> Integrator<'a> {
 
     /// The surface's own colour, layer by layer, then what it reflects and transmits.
     fn shade(&self, s: &Shading, sampler: &mut PixelSampler, counts: &mut RayCounts) -> DVec3 {
-        let layers = self.layers(s);
+        let mut layers = self.layers(s);
         // The photons' light, gathered once per brilliance among the layers that show it
         // (a diffuse of zero, as glass has, shows none).
         let mut caustic: Option<(f64, DVec3)> = None;
@@ -410,9 +410,9 @@ impl<'a> Integrator<'a> {
         let mut diffuse = radiosity::Albedo::default();
         if self.quality < QUALITY_LIGHTING {
             // POV-Ray's quick colours: the pigment, fully lit.
-            return layers.iter().next().map_or(DVec3::ZERO, |l| l.colour.rgb);
+            return layers.next().map_or(DVec3::ZERO, |l| l.colour.rgb);
         }
-        for layer in layers.iter() {
+        for layer in layers {
             let c = layer.colour;
             let shaded = ShadedLayer {
                 pigment: c,

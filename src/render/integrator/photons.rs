@@ -433,7 +433,7 @@ impl Integrator<'_> {
         let layers = self.layers(s);
         let mut through = DVec3::ONE;
         let mut top = None;
-        for layer in layers.iter() {
+        for layer in layers {
             let c = layer.colour;
             top.get_or_insert((c, layer.finish));
             through *= c.rgb * c.filter + DVec3::splat(c.transmit);
