@@ -147,7 +147,11 @@ impl Evaluator<'_> {
     fn while_directive(&mut self, span: Span) -> R<()> {
         let at = self.frame_pos().saturating_sub(1);
         self.count_iteration(span)?;
-        if self.condition()? {
+        // The condition is read again at every `#end`: worth compiling.
+        let outer = std::mem::replace(&mut self.programs.in_loop_condition, true);
+        let holds = self.condition();
+        self.programs.in_loop_condition = outer;
+        if holds? {
             self.conds.push(Cond::While { span, at });
         } else {
             self.skip_to_end(span)?;

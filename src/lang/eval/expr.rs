@@ -7,6 +7,7 @@ use glam::DVec3;
 use super::super::diagnostics::Span;
 use super::super::syntax::{Punct, Token, TokenKind};
 use super::Evaluator;
+use super::compiled::Entry;
 use super::functions::{self, Builtin};
 use super::value::{BinOp, Value, Vector, arith, negate};
 use crate::lang::diagnostics::Diagnostic;
@@ -18,7 +19,7 @@ const EPSILON: f64 = 1e-10;
 
 /// The binary operators' precedence, loosest first; all associate to the left.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-enum Level {
+pub(super) enum Level {
     Or,
     And,
     Comparison,
@@ -29,7 +30,7 @@ enum Level {
 }
 
 impl Level {
-    fn tighter(self) -> Level {
+    pub(super) fn tighter(self) -> Level {
         match self {
             Level::Or => Level::And,
             Level::And => Level::Comparison,
@@ -46,6 +47,9 @@ impl Evaluator<'_> {
         if let Some(operand) = self.lone_operand() {
             return Ok(operand);
         }
+        if let Some(compiled) = self.run_compiled(Entry::Expr) {
+            return Ok(compiled);
+        }
         let start = self.peek()?.span;
         self.enter(start)?;
         let r = self.ternary();
@@ -58,20 +62,11 @@ impl Evaluator<'_> {
     /// name). Anything else (an operator next, a directive, a frame's end) takes the full
     /// descent.
     fn lone_operand(&mut self) -> Option<(Value, Span)> {
-        let ends = match self.raw_peek(1)?.kind {
-            TokenKind::Punct(
-                Punct::Comma
-                | Punct::Semi
-                | Punct::Colon
-                | Punct::RParen
-                | Punct::RBrace
-                | Punct::RBracket,
-            )
-            | TokenKind::Ident(_) => true,
-            TokenKind::Punct(Punct::Gt) => self.in_vector,
-            _ => false,
-        };
-        if ends { self.plain_operand() } else { None }
+        if ends_operand(self.raw_peek(1)?, self.in_vector) {
+            self.plain_operand()
+        } else {
+            None
+        }
     }
 
     /// A number, or a name (not a keyword) holding a float, with no `.x`, `[i]` or `(`
@@ -81,11 +76,7 @@ impl Evaluator<'_> {
     /// for numbers alone).
     fn plain_operand(&mut self) -> Option<(Value, Span)> {
         let tok = *self.raw_peek(0)?;
-        let after = self.raw_peek(1)?;
-        if [Punct::Dot, Punct::LBracket, Punct::LParen]
-            .iter()
-            .any(|&p| after.is_punct(p))
-        {
+        if continues_operand(self.raw_peek(1)?) {
             return None;
         }
         let value = match tok.kind {
@@ -164,7 +155,7 @@ impl Evaluator<'_> {
     }
 
     pub(super) fn truthy(&self, v: &Value, span: Span) -> R<bool> {
-        Ok(self.to_float(v, span)?.abs() > EPSILON)
+        Ok(is_true(self.to_float(v, span)?))
     }
 
     fn ternary(&mut self) -> R<(Value, Span)> {
@@ -185,6 +176,9 @@ impl Evaluator<'_> {
 
     /// `+` and `-` and tighter: a map entry's value, a count before a vector.
     pub(super) fn additive(&mut self) -> R<(Value, Span)> {
+        if let Some(compiled) = self.run_compiled(Entry::Additive) {
+            return Ok(compiled);
+        }
         self.binary(Level::Additive)
     }
 
@@ -217,24 +211,14 @@ impl Evaluator<'_> {
     /// The level of the operator `p` after the operand `a`, or None where `p` ends the
     /// expression.
     fn level_of(&self, p: Punct, a: &Value) -> Option<Level> {
-        Some(match p {
-            Punct::Pipe => Level::Or,
-            Punct::Amp => Level::And,
-            Punct::Plus | Punct::Minus => Level::Additive,
-            Punct::Star | Punct::Slash => Level::Multiplicative,
-            // `box { <a> <b> }`: a `<` after a vector starts the next vector, and so does
-            // one outside parentheses (measured: POV-Ray reads `poly { 4 <1, ...> }` as
-            // order 4, and refuses `str(A < 0.3, 0, 0)`); inside a vector `>` closes it.
-            Punct::Gt if self.in_vector => return None,
-            Punct::Lt if !matches!(a, Value::Float(_)) || self.grouping == 0 => return None,
-            Punct::Lt | Punct::Le | Punct::Eq | Punct::Ne | Punct::Ge | Punct::Gt => {
-                Level::Comparison
-            }
-            _ => return None,
-        })
+        let context = Context {
+            in_vector: self.in_vector,
+            grouped: self.grouping > 0,
+        };
+        operator_level(p, matches!(a, Value::Float(_)), context)
     }
 
-    fn apply(
+    pub(super) fn apply(
         &self,
         p: Punct,
         (a, sa): (&Value, Span),
@@ -264,39 +248,30 @@ impl Evaluator<'_> {
             },
             _ => (self.to_float(a, sa)?, self.to_float(b, sb)?),
         };
-        // Equality has POV-Ray's tolerance, and so do `<=` and `>=` (measured: 0.5 +
-        // 1e-12 <= 0.5 holds, 0.5 + 2e-10 <= 0.5 does not; `<` and `>` are strict), so
-        // `#while (X <= 0.5)` stepping X by 0.01 from -0.5 runs 101 times.
-        let equal = (x - y).abs() <= EPSILON;
-        Ok(match p {
-            Punct::Lt => x < y,
-            Punct::Le => x < y || equal,
-            Punct::Eq => equal,
-            Punct::Ne => !equal,
-            Punct::Ge => x > y || equal,
-            _ => x > y,
-        })
+        Ok(compare_floats(p, x, y))
     }
 
     fn unary(&mut self) -> R<(Value, Span)> {
         let tok = self.peek()?;
-        if tok.is_punct(Punct::Minus) || tok.is_punct(Punct::Plus) || tok.is_punct(Punct::Bang) {
+        if let Some(p) = unary_operator(&tok) {
             self.next()?;
             self.enter(tok.span)?;
             let r = self.unary();
             self.leave();
             let (v, span) = r?;
             let span = tok.span.join(span);
-            let v = if tok.is_punct(Punct::Minus) {
-                negate(&v).map_err(|m| self.err(span, m))?
-            } else if tok.is_punct(Punct::Bang) {
-                Value::Float(f64::from(u8::from(!self.truthy(&v, span)?)))
-            } else {
-                v
-            };
-            return Ok((v, span));
+            return Ok((self.apply_unary(p, v, span)?, span));
         }
         self.postfix()
+    }
+
+    /// `-v`, `+v` or `!v`.
+    pub(super) fn apply_unary(&self, p: Punct, v: Value, span: Span) -> R<Value> {
+        match p {
+            Punct::Minus => negate(&v).map_err(|m| self.err(span, m)),
+            Punct::Bang => Ok(Value::Float(f64::from(u8::from(!self.truthy(&v, span)?)))),
+            _ => Ok(v),
+        }
     }
 
     pub(super) fn postfix(&mut self) -> R<(Value, Span)> {
@@ -320,7 +295,7 @@ impl Evaluator<'_> {
         Ok((v, span))
     }
 
-    fn component(&self, v: &Value, field: &str, span: Span) -> R<Value> {
+    pub(super) fn component(&self, v: &Value, field: &str, span: Span) -> R<Value> {
         let (c, colour) = match v {
             Value::Vector(v) => (v.c, false),
             Value::Colour(c) => (*c, true),
@@ -412,13 +387,7 @@ impl Evaluator<'_> {
                 }
                 continue;
             }
-            // Old scenes separate components with spaces only: `<0 20 0>`.
-            if self.peek()?.is_punct(Punct::Gt)
-                || !matches!(
-                    self.peek()?.kind,
-                    TokenKind::Number(_) | TokenKind::Ident(_) | TokenKind::Punct(Punct::LParen)
-                )
-            {
+            if !starts_next_component(&self.peek()?) {
                 break;
             }
         }
@@ -432,26 +401,7 @@ impl Evaluator<'_> {
     fn ident_value(&mut self, tok: &Token, name: &str) -> R<(Value, Span)> {
         let span = tok.span;
         let constant = |f: f64| Some(Value::Float(f));
-        let vec3 = |x: f64, y: f64, z: f64| Some(Value::Vector(Vector::new3(DVec3::new(x, y, z))));
-        let value = match name {
-            "pi" => constant(std::f64::consts::PI),
-            "true" | "yes" | "on" => constant(1.0),
-            "false" | "no" | "off" => constant(0.0),
-            "x" => vec3(1.0, 0.0, 0.0),
-            "y" => vec3(0.0, 1.0, 0.0),
-            "z" => vec3(0.0, 0.0, 1.0),
-            "t" => Some(Value::Vector(Vector {
-                c: [0.0, 0.0, 0.0, 1.0, 0.0],
-                len: 4,
-            })),
-            "u" => Some(Value::Vector(Vector {
-                c: [1.0, 0.0, 0.0, 0.0, 0.0],
-                len: 2,
-            })),
-            "v" => Some(Value::Vector(Vector {
-                c: [0.0, 1.0, 0.0, 0.0, 0.0],
-                len: 2,
-            })),
+        let value = fixed_constant(name).or_else(|| match name {
             "image_width" => constant(f64::from(self.image_width)),
             "image_height" => constant(f64::from(self.image_height)),
             "version" => constant(self.scene.version),
@@ -460,7 +410,7 @@ impl Evaluator<'_> {
                 self.inputs.read_clock.set(true);
                 constant(f)
             }),
-        };
+        });
         if let Some(v) = value {
             self.next()?;
             return Ok((v, span));
@@ -713,6 +663,111 @@ impl Evaluator<'_> {
 }
 
 use super::placement::normal_name as placement_normal_name;
+
+/// Whether a float counts as true: farther from zero than POV-Ray's tolerance.
+pub(super) fn is_true(x: f64) -> bool {
+    x.abs() > EPSILON
+}
+
+/// `x p y` for a comparison operator `p`.
+pub(super) fn compare_floats(p: Punct, x: f64, y: f64) -> bool {
+    // Equality has POV-Ray's tolerance, and so do `<=` and `>=` (measured: 0.5 +
+    // 1e-12 <= 0.5 holds, 0.5 + 2e-10 <= 0.5 does not; `<` and `>` are strict), so
+    // `#while (X <= 0.5)` stepping X by 0.01 from -0.5 runs 101 times.
+    let equal = (x - y).abs() <= EPSILON;
+    match p {
+        Punct::Lt => x < y,
+        Punct::Le => x < y || equal,
+        Punct::Eq => equal,
+        Punct::Ne => !equal,
+        Punct::Ge => x > y || equal,
+        _ => x > y,
+    }
+}
+
+/// How an expression is read where it starts: inside `<...>` (where `>` closes the vector)
+/// and inside parentheses (where `<` after a float compares).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) struct Context {
+    pub in_vector: bool,
+    pub grouped: bool,
+}
+
+/// The level of the operator `p` after an operand (a float or not), or None where `p` ends
+/// the expression.
+pub(super) fn operator_level(p: Punct, after_float: bool, context: Context) -> Option<Level> {
+    Some(match p {
+        Punct::Pipe => Level::Or,
+        Punct::Amp => Level::And,
+        Punct::Plus | Punct::Minus => Level::Additive,
+        Punct::Star | Punct::Slash => Level::Multiplicative,
+        // `box { <a> <b> }`: a `<` after a vector starts the next vector, and so does
+        // one outside parentheses (measured: POV-Ray reads `poly { 4 <1, ...> }` as
+        // order 4, and refuses `str(A < 0.3, 0, 0)`); inside a vector `>` closes it.
+        Punct::Gt if context.in_vector => return None,
+        Punct::Lt if !after_float || !context.grouped => return None,
+        Punct::Lt | Punct::Le | Punct::Eq | Punct::Ne | Punct::Ge | Punct::Gt => Level::Comparison,
+        _ => return None,
+    })
+}
+
+/// Whether `next`, after an operand, cannot continue the expression: `,`, `;`, `:`, a
+/// closing bracket, `>` inside a vector, or a name.
+pub(super) fn ends_operand(next: &Token, in_vector: bool) -> bool {
+    match next.kind {
+        TokenKind::Punct(
+            Punct::Comma
+            | Punct::Semi
+            | Punct::Colon
+            | Punct::RParen
+            | Punct::RBrace
+            | Punct::RBracket,
+        )
+        | TokenKind::Ident(_) => true,
+        TokenKind::Punct(Punct::Gt) => in_vector,
+        _ => false,
+    }
+}
+
+/// Whether `next` makes an operand more than a plain number or name: `.x`, `[i]`, `(`.
+pub(super) fn continues_operand(next: &Token) -> bool {
+    [Punct::Dot, Punct::LBracket, Punct::LParen]
+        .iter()
+        .any(|&p| next.is_punct(p))
+}
+
+/// Whether a vector's next component starts at `next` without a comma: old scenes separate
+/// components with spaces only (`<0 20 0>`).
+pub(super) fn starts_next_component(next: &Token) -> bool {
+    matches!(
+        next.kind,
+        TokenKind::Number(_) | TokenKind::Ident(_) | TokenKind::Punct(Punct::LParen)
+    )
+}
+
+/// The prefix operator `tok` is, if any.
+pub(super) fn unary_operator(tok: &Token) -> Option<Punct> {
+    [Punct::Minus, Punct::Plus, Punct::Bang]
+        .into_iter()
+        .find(|&p| tok.is_punct(p))
+}
+
+/// The built-in identifiers whose values never change: `pi`, `true`, `x` and the like.
+pub(super) fn fixed_constant(name: &str) -> Option<Value> {
+    let axis = |c: [f64; 5], len: u8| Some(Value::Vector(Vector { c, len }));
+    match name {
+        "pi" => Some(Value::Float(std::f64::consts::PI)),
+        "true" | "yes" | "on" => Some(Value::Float(1.0)),
+        "false" | "no" | "off" => Some(Value::Float(0.0)),
+        "x" => axis([1.0, 0.0, 0.0, 0.0, 0.0], 3),
+        "y" => axis([0.0, 1.0, 0.0, 0.0, 0.0], 3),
+        "z" => axis([0.0, 0.0, 1.0, 0.0, 0.0], 3),
+        "t" => axis([0.0, 0.0, 0.0, 1.0, 0.0], 4),
+        "u" => axis([1.0, 0.0, 0.0, 0.0, 0.0], 2),
+        "v" => axis([0.0, 1.0, 0.0, 0.0, 0.0], 2),
+        _ => None,
+    }
+}
 
 fn srgb_decode(v: f64) -> f64 {
     if v <= 0.04045 {

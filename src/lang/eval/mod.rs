@@ -13,6 +13,7 @@
 
 mod blob;
 pub mod budget;
+mod compiled;
 mod data_files;
 mod directives;
 mod expr;
@@ -122,6 +123,8 @@ pub struct Evaluator<'w> {
     warned_version_3_8: bool,
     /// What the scene was made from (its files and whether it read the clock).
     pub inputs: inputs::Inputs,
+    /// Expressions of loop and macro bodies, compiled where they were first read.
+    programs: compiled::Programs,
 }
 
 impl<'w> Evaluator<'w> {
@@ -164,6 +167,7 @@ impl<'w> Evaluator<'w> {
             light_groups: 0,
             warned_version_3_8: false,
             inputs: inputs::Inputs::default(),
+            programs: compiled::Programs::default(),
         }
     }
 
