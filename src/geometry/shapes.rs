@@ -288,12 +288,18 @@ impl ShapeKind {
         tables: &ShapeTables,
     ) -> Option<(f64, u32)> {
         match *self {
-            // The commonest shape, tested here without the general dispatch.
+            // The commonest shapes (every ray meets a scene's floor), tested here without
+            // the general dispatch.
             ShapeKind::Sphere { center, radius } => sphere_roots(ray, center, radius)
                 .as_slice()
                 .iter()
                 .find(|&&t| t > 0.0 && t < t_max)
                 .map(|&t| (t, 0)),
+            ShapeKind::Plane { normal, distance } => {
+                let denom = normal.dot(ray.direction);
+                let t = (distance - normal.dot(ray.origin)) / denom;
+                (denom != 0.0 && t > 0.0 && t < t_max).then_some((t, 0))
+            }
             ShapeKind::Mesh(i) => tables.meshes[i as usize].hit(ray, t_max),
             ShapeKind::HeightField(i) => tables.height_fields[i as usize].hit(ray, t_max),
             ShapeKind::Box { min, max } => box_crossings(ray, min, max)?
