@@ -7,17 +7,20 @@
 //!
 //! Only a subset compiles: numbers, names holding floats or vectors, `pi` and the axis
 //! constants, the binary and unary operators, parentheses, vector literals, `.x`-style
-//! components, the built-in functions of one float (`sin`, `sqrt`, `int`, ...), and `? :`
-//! inside brackets (where the span it gives does not depend on the branch taken). Anything
-//! else within reach (another call, a string, a colour keyword, a directive, the frame's
-//! end) leaves the expression to the interpreter. So does every run
-//! in which a name no longer holds the kind it held when the expression was compiled (the
-//! kinds decide how the tokens parse: `<` after a float compares, after a vector it starts
-//! the next one) and every run whose arithmetic fails: nothing compiled has a side effect,
-//! so the interpreter then reads the same tokens and gives the same value or error.
+//! components, the built-in functions of one float (`sin`, `sqrt`, `int`, ...) and those
+//! of [`CALLS`] (`mod`, `pow`, `vrotate`, `rand`, ...), and `? :` inside brackets (where
+//! the span it gives does not depend on the branch taken). Anything else within reach
+//! (another call, a string, a colour keyword, a directive, the frame's end) leaves the
+//! expression to the interpreter. So does every run in which a name no longer holds the
+//! kind it held when the expression was compiled (the kinds decide how the tokens parse:
+//! `<` after a float compares, after a vector it starts the next one) and every run whose
+//! arithmetic or call fails: the interpreter then reads the same tokens and gives the same
+//! value or error. Nothing compiled has a side effect but `rand`'s, and a failed run puts
+//! the random streams it advanced back first.
 
 use std::collections::HashMap;
 use std::hash::BuildHasherDefault;
+use std::rc::Rc;
 
 use super::super::diagnostics::Span;
 use super::super::syntax::{Name, Punct, Token, TokenKind};
@@ -52,7 +55,7 @@ struct Site {
 /// subset (so it is not read twice to learn that).
 #[derive(Default)]
 pub(super) struct Programs {
-    by_site: HashMap<Site, Option<Program>, BuildHasherDefault<NameHasher>>,
+    by_site: HashMap<Site, Option<Rc<Program>>, BuildHasherDefault<NameHasher>>,
     /// Off in the tests that compare the two ways of reading.
     pub disabled: bool,
     /// Reading a `#while` condition, which the loop's `#end` reads again.
@@ -116,6 +119,8 @@ enum Op {
     FloatUnary(Punct),
     /// A built-in function of one float (`sin`, `sqrt`, `int`, ...).
     FloatCall(fn(f64) -> f64),
+    /// Another built-in function of [`CALLS`].
+    Call(NativeCall),
     Vector(Vector),
     LoadVector(Name, u8),
     /// Arithmetic with a vector on one side at least; whether each side is a float.
@@ -129,6 +134,47 @@ enum Op {
     SelectFloat,
     SelectVector,
 }
+
+/// A call of a built-in function of [`CALLS`], with the kinds of its arguments.
+#[derive(Clone, Copy, Debug)]
+struct NativeCall {
+    f: functions::Native,
+    name: Name,
+    argc: u8,
+    /// Bit i set: argument i is a float (else a vector).
+    floats: u8,
+    result: Kind,
+    /// `rand`: it advances a random stream, which a failed run restores.
+    advances_stream: bool,
+}
+
+/// The built-in functions beyond those of one float that compile: the kind of their value,
+/// and whether they take floats only (the others take vectors, or floats as vectors). All
+/// are pure but `rand`, whose stream a failed run puts back before the interpreter reads
+/// the expression again; `seed` (a new stream), `select` (a value of either kind) and the
+/// rest stay with the interpreter.
+const CALLS: &[(&str, Kind, bool)] = &[
+    ("atan2", Kind::Float, true),
+    ("bitwise_and", Kind::Float, true),
+    ("bitwise_or", Kind::Float, true),
+    ("bitwise_xor", Kind::Float, true),
+    ("div", Kind::Float, true),
+    ("max", Kind::Float, true),
+    ("min", Kind::Float, true),
+    ("mod", Kind::Float, true),
+    ("pow", Kind::Float, true),
+    ("rand", Kind::Float, true),
+    ("vaxis_rotate", Kind::Vector(3), false),
+    ("vcross", Kind::Vector(3), false),
+    ("vdot", Kind::Float, false),
+    ("vlength", Kind::Float, false),
+    ("vnormalize", Kind::Vector(3), false),
+    ("vrotate", Kind::Vector(3), false),
+];
+
+/// The most arguments of a compiled call, and the most `rand` calls in one expression.
+const MAX_ARGS: usize = 4;
+const MAX_RANDS: usize = 8;
 
 /// The most floats a compiled expression holds at once.
 const FLOATS: usize = 16;
@@ -144,6 +190,9 @@ struct Stacks {
     lens: [u8; VECTORS],
     nf: usize,
     nv: usize,
+    /// Random streams before the run's `rand` calls: (stream, state).
+    undo: [(usize, u64); MAX_RANDS],
+    nundo: usize,
 }
 
 impl Stacks {
@@ -154,6 +203,8 @@ impl Stacks {
             lens: [0; VECTORS],
             nf: 0,
             nv: 0,
+            undo: [(0, 0); MAX_RANDS],
+            nundo: 0,
         }
     }
 
@@ -208,20 +259,17 @@ impl Evaluator<'_> {
                 grouped: self.grouping > 0,
             },
         };
-        let found = self
-            .programs
-            .by_site
-            .get(&site)
-            .map(|p| self.run_program(p.as_ref()?));
-        let (value, end, span) = match found {
-            Some(run) => run?,
+        let program = match self.programs.by_site.get(&site) {
+            Some(found) => found.clone()?,
             None => {
-                let program = Compiler::new(self, entry).and_then(Compiler::finish);
-                let run = program.as_ref().and_then(|p| self.run_program(p));
-                self.programs.by_site.insert(site, program);
-                run?
+                let program = Compiler::new(self, entry)
+                    .and_then(Compiler::finish)
+                    .map(Rc::new);
+                self.programs.by_site.insert(site, program.clone());
+                program?
             }
         };
+        let (value, end, span) = self.run_program(&program)?;
         self.set_frame_pos(end);
         Some((value, span))
     }
@@ -241,13 +289,19 @@ impl Evaluator<'_> {
     }
 
     /// The program's value, where it reads on and the span of what it read.
-    fn run_program(&self, program: &Program) -> Option<(Value, usize, Span)> {
+    fn run_program(&mut self, program: &Program) -> Option<(Value, usize, Span)> {
         if self.depth + program.nesting > MAX_DEPTH {
             return None;
         }
         let mut s = Stacks::new();
         for &op in &program.ops {
-            self.step(op, &mut s)?;
+            if self.step(op, &mut s).is_none() {
+                // The interpreter reads the expression again: as if this run never was.
+                for &(stream, state) in s.undo[..s.nundo].iter().rev() {
+                    self.rng_states[stream] = state;
+                }
+                return None;
+            }
         }
         let value = if program.kind == Kind::Float {
             Value::Float(s.pop_float())
@@ -259,7 +313,7 @@ impl Evaluator<'_> {
 
     /// One operation on the stacks; `None` where the interpreter would report an error (or
     /// a name changed kind).
-    fn step(&self, op: Op, s: &mut Stacks) -> Option<()> {
+    fn step(&mut self, op: Op, s: &mut Stacks) -> Option<()> {
         let at = Span::DETACHED;
         match op {
             Op::Float(x) => s.push_float(x),
@@ -284,6 +338,7 @@ impl Evaluator<'_> {
                 let x = s.pop_float();
                 s.push_float(f(x));
             }
+            Op::Call(call) => self.native_call(call, s)?,
             Op::Vector(v) => s.push_vector(v),
             Op::LoadVector(name, len) => match self.lookup(name)? {
                 Value::Vector(v) if v.len == len => s.push_vector(*v),
@@ -335,6 +390,41 @@ impl Evaluator<'_> {
     }
 }
 
+impl Evaluator<'_> {
+    /// A call of [`CALLS`] on the stacks' top values, its random stream noted first.
+    fn native_call(&mut self, call: NativeCall, s: &mut Stacks) -> Option<()> {
+        let at = Span::DETACHED;
+        let argc = usize::from(call.argc);
+        let mut args: [(Value, Span); MAX_ARGS] = std::array::from_fn(|_| (Value::Float(0.0), at));
+        for (i, arg) in args[..argc].iter_mut().enumerate().rev() {
+            arg.0 = s.pop_value(call.floats & (1 << i) != 0);
+        }
+        if call.advances_stream
+            && let Value::Float(i) = args[0].0
+            && i >= 0.0
+            && let Some(&state) = self.rng_states.get(i as usize)
+        {
+            s.undo[s.nundo] = (i as usize, state);
+            s.nundo += 1;
+        }
+        let value = (call.f)(
+            self,
+            &functions::Call {
+                name: call.name,
+                args: &args[..argc],
+                span: at,
+            },
+        )
+        .ok()?;
+        match (call.result, value) {
+            (Kind::Float, Value::Float(x)) => s.push_float(x),
+            (Kind::Vector(len), Value::Vector(v)) if v.len == len => s.push_vector(v),
+            _ => return None,
+        }
+        Some(())
+    }
+}
+
 /// `x p y` as the interpreter computes it (`apply`); `None` for a division by zero.
 fn float_binary(p: Punct, x: f64, y: f64) -> Option<f64> {
     let truth = |t: bool| f64::from(u8::from(t));
@@ -370,6 +460,8 @@ struct Compiler<'e, 'w> {
     /// The stacks' depths after the operations so far.
     floats: usize,
     vectors: usize,
+    /// `rand` calls so far (each notes its stream's state).
+    rands: usize,
 }
 
 /// The most brackets and signs a compiled expression nests (deeper ones are read by the
@@ -393,6 +485,7 @@ impl<'e, 'w> Compiler<'e, 'w> {
             ops: Vec::new(),
             floats: 0,
             vectors: 0,
+            rands: 0,
         })
     }
 
@@ -450,6 +543,14 @@ impl<'e, 'w> Compiler<'e, 'w> {
             Op::Float(_) | Op::LoadFloat(_) => (0, 0, 1, 0),
             Op::FloatBinary(_) => (2, 0, 1, 0),
             Op::FloatUnary(_) | Op::FloatCall(_) => (1, 0, 1, 0),
+            Op::Call(c) => {
+                let f = c.floats.count_ones() as usize;
+                let v = usize::from(c.argc) - f;
+                match c.result {
+                    Kind::Float => (f, v, 1, 0),
+                    Kind::Vector(_) => (f, v, 0, 1),
+                }
+            }
             Op::Vector(_) | Op::LoadVector(..) => (0, 0, 0, 1),
             Op::VectorBinary(_, a, b) => (
                 usize::from(a) + usize::from(b),
@@ -689,8 +790,10 @@ impl<'e, 'w> Compiler<'e, 'w> {
             Some(Value::Vector(v)) => (Op::Vector(v), Kind::Vector(v.len)),
             Some(_) => return None,
             None if crate::lang::parse::is_interned_keyword(name) => {
-                return match functions::builtin(name)?.eval {
+                let builtin = functions::builtin(name)?;
+                return match builtin.eval {
                     functions::Eval::Float(f) => self.float_call(tok, f),
+                    functions::Eval::Native(f) => self.native_call(tok, builtin, f),
                     _ => None,
                 };
             }
@@ -710,27 +813,90 @@ impl<'e, 'w> Compiler<'e, 'w> {
 }
 
 impl Compiler<'_, '_> {
-    /// `name(x)` for a built-in function of one float, read as `call_function` reads it:
-    /// its argument outside any vector, the call one level deeper.
-    fn float_call(&mut self, name: &Token, f: fn(f64) -> f64) -> Option<(Kind, Span)> {
-        self.pos += 1;
+    /// The arguments of a call, read as `function_body` reads them: outside any vector,
+    /// the call one level deeper. Their kinds and the closing parenthesis's span.
+    fn arguments(&mut self) -> Option<(Vec<Kind>, Span)> {
         self.expect(Punct::LParen)?;
         self.enter()?;
         let saved = std::mem::replace(&mut self.in_vector, false);
         self.enclosed += 1;
-        let arg = self.expr();
+        let mut kinds = Vec::new();
+        let mut read = || -> Option<()> {
+            if self.look(0)?.is_punct(Punct::RParen) {
+                return Some(());
+            }
+            loop {
+                kinds.push(self.expr()?.0);
+                if !self.look(0)?.is_punct(Punct::Comma) {
+                    return Some(());
+                }
+                self.pos += 1;
+            }
+        };
+        let r = read();
         self.enclosed -= 1;
         self.in_vector = saved;
         self.leave();
-        let (kind, _) = arg?;
-        // A second argument (an arity error) or a vector (a type error) is the
-        // interpreter's to report.
+        r?;
         let close = self.expect(Punct::RParen)?;
-        if kind != Kind::Float {
+        Some((kinds, close.span))
+    }
+
+    /// A call of a function of [`CALLS`] whose arguments have the kinds it takes, in a
+    /// number it accepts.
+    fn native_call(
+        &mut self,
+        name: &Token,
+        builtin: &'static functions::Builtin,
+        f: functions::Native,
+    ) -> Option<(Kind, Span)> {
+        let &(_, result, floats_only) = CALLS.iter().find(|c| c.0 == builtin.name)?;
+        self.pos += 1;
+        let (kinds, close) = self.arguments()?;
+        if kinds.len() > MAX_ARGS || floats_only && kinds.iter().any(|&k| k != Kind::Float) {
+            return None;
+        }
+        let at = Span::DETACHED;
+        let samples: Vec<(Value, Span)> = kinds.iter().map(|k| (k.sample(), at)).collect();
+        let call = functions::Call {
+            name: builtin.name,
+            args: &samples,
+            span: at,
+        };
+        self.ev.check_arity(builtin.arity, &call).ok()?;
+        let advances_stream = builtin.name == "rand";
+        self.rands += usize::from(advances_stream);
+        if self.rands > MAX_RANDS {
+            return None;
+        }
+        let floats = kinds
+            .iter()
+            .enumerate()
+            .filter(|&(_, &k)| k == Kind::Float)
+            .fold(0u8, |m, (i, _)| m | 1 << i);
+        self.emit(Op::Call(NativeCall {
+            f,
+            name: builtin.name,
+            argc: kinds.len() as u8,
+            floats,
+            result,
+            advances_stream,
+        }))?;
+        Some((result, name.span.join(close)))
+    }
+
+    /// `name(x)` for a built-in function of one float, read as `call_function` reads it:
+    /// its argument outside any vector, the call one level deeper.
+    fn float_call(&mut self, name: &Token, f: fn(f64) -> f64) -> Option<(Kind, Span)> {
+        self.pos += 1;
+        let (kinds, close) = self.arguments()?;
+        // Another count (an arity error) or a vector (a type error) is the interpreter's
+        // to report.
+        if kinds != [Kind::Float] {
             return None;
         }
         self.emit(Op::FloatCall(f))?;
-        Some((Kind::Float, name.span.join(close.span)))
+        Some((Kind::Float, name.span.join(close)))
     }
 }
 

@@ -31,7 +31,7 @@ fn looped(expr: &str, retype: bool) -> String {
         ""
     };
     format!(
-        "#declare A = 1.5; #declare B = -2; #declare C = 0;\n\
+        "#declare A = 1.5; #declare B = -2; #declare C = 0; #declare S = seed(3);\n\
          #declare V = <1, 2, 3>; #declare W = <0.5, -1>;\n\
          #declare I = 0;\n\
          #while (I < 2)\n\
@@ -40,11 +40,14 @@ fn looped(expr: &str, retype: bool) -> String {
            #if (I = 0) #declare R0 = R; #end\n\
            #declare After = I;\n\
            #declare I = I + 1;\n\
-         #end\n"
+         #end\n\
+         #declare Next = rand(S);\n"
     )
 }
 
-const GLOBALS: &[&str] = &["R0", "R", "After", "I"];
+/// `Next` is the random stream's next value after the loop: a run that failed and was
+/// read again by the interpreter must not have advanced it twice.
+const GLOBALS: &[&str] = &["R0", "R", "After", "I", "Next"];
 
 fn same_both_ways(expr: &str, retype: bool) -> usize {
     let source = looped(expr, retype);
@@ -55,8 +58,7 @@ fn same_both_ways(expr: &str, retype: bool) -> usize {
     count
 }
 
-/// Expressions of every compiled operation give the interpreter's values, and are compiled
-/// (more programs than the loop's own `I < 2` and `I + 1`).
+/// Expressions of every compiled operation give the interpreter's values, and are compiled.
 #[test]
 fn each_operation_compiles_to_the_interpreters_value() {
     let cases = [
@@ -76,10 +78,19 @@ fn each_operation_compiles_to_the_interpreters_value() {
         "<A, B, C, A, B>",
         "sqrt(sin(A) * 2) + int(B / 3) + degrees(pi)",
         "<cos(A), 1, abs(B)>",
+        "mod(A * 7, 3) + pow(A, 2) + max(A, B, C) + min(1, 2) + atan2(A, B) + div(7, 2)",
+        "bitwise_and(7, 3) + bitwise_or(4, 1) + bitwise_xor(5, 1)",
+        "<vlength(V), vdot(V, W), vlength(W)> + vcross(V, x) + vnormalize(V) + vrotate(V, <0, 90, 0>)",
+        "vaxis_rotate(V, y, 30) * A",
+        "rand(S) * 10 + A",
+        "<rand(S), rand(S), rand(S)>",
     ];
+    // The loop's own expressions (`I < 2`, `I = 0`, `I + 1`); a lone `0` is not compiled.
+    let base = same_both_ways("0", false);
+    assert_eq!(base, 3);
     for expr in cases {
         let count = same_both_ways(expr, false);
-        assert!(count > 2, "{expr} did not compile");
+        assert!(count > base, "{expr} did not compile");
     }
 }
 
@@ -88,7 +99,13 @@ fn each_operation_compiles_to_the_interpreters_value() {
 /// value or error.
 #[test]
 fn what_does_not_compile_reads_as_before() {
-    for expr in ["A * 2 + 1", "<A, 1, 2>", "A < 2"] {
+    for expr in [
+        "A * 2 + 1",
+        "<A, 1, 2>",
+        "A < 2",
+        "rand(S) + A",
+        "<rand(S), A, 1>",
+    ] {
         same_both_ways(expr, true);
     }
     for expr in [
@@ -107,7 +124,15 @@ fn what_does_not_compile_reads_as_before() {
         "sin(A, B)",
         "sin()",
         "sin A",
-        "mod(A, 2)",
+        "mod(A, C)",
+        "rand(S) + rand(S) / C",
+        "rand(S) + Q",
+        "rand(A)",
+        "vnormalize(<0, 0, 0>) + rand(S)",
+        "pow(V, 2)",
+        "max()",
+        "select(A, 1, 2)",
+        "seed(2) + 1",
     ] {
         same_both_ways(expr, false);
     }
@@ -145,7 +170,7 @@ fn macro_bodies_compile_and_their_ends_stay_interpreted() {
 
 fn leaf() -> impl Strategy<Value = String> {
     prop::sample::select(vec![
-        "0", "1", "2.5", "A", "B", "C", "V", "W", "Q", "pi", "x", "t", "u",
+        "0", "1", "2.5", "A", "B", "C", "V", "W", "Q", "pi", "x", "t", "u", "rand(S)",
     ])
     .prop_map(String::from)
 }

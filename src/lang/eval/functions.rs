@@ -34,7 +34,7 @@ pub struct Call<'a> {
     pub span: Span,
 }
 
-type Native = fn(&mut Evaluator<'_>, &Call<'_>) -> R<Value>;
+pub(super) type Native = fn(&mut Evaluator<'_>, &Call<'_>) -> R<Value>;
 
 /// What a call does once its arguments are read and counted.
 #[derive(Clone, Copy)]
@@ -289,7 +289,7 @@ impl Evaluator<'_> {
         }
     }
 
-    fn check_arity(&self, arity: Arity, call: &Call<'_>) -> R<()> {
+    pub(super) fn check_arity(&self, arity: Arity, call: &Call<'_>) -> R<()> {
         let (name, found) = (call.name, call.args.len());
         let message = match arity {
             Exactly(n) if found != n => format!(
