@@ -773,7 +773,7 @@ impl Evaluator<'_> {
             end,
             file,
         };
-        self.special_names = true;
+        self.mark_special(name);
         self.scopes[0].insert(Key::new(name), Value::Macro(Rc::new(def)));
         Ok(())
     }

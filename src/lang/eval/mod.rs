@@ -70,9 +70,11 @@ pub struct Evaluator<'w> {
     frames: Vec<Frame>,
     conds: Vec<Cond>,
     scopes: Vec<Scope>,
-    /// Whether any scope may hold a macro or an unsupported value, which the token stream
-    /// must act on when it meets their names; until then names pass unlooked-up.
-    special_names: bool,
+    /// The names (by interned address) some scope may bind to a macro or an unsupported
+    /// value, which the token stream must act on where they appear; other names pass
+    /// unlooked-up (a scene that declares one macro no longer looks up every name it reads).
+    special_names:
+        std::collections::HashSet<usize, std::hash::BuildHasherDefault<stream::NameHasher>>,
     pub scene: Scene,
     pub warnings: Vec<Diagnostic>,
     depth: usize,
@@ -140,7 +142,7 @@ impl<'w> Evaluator<'w> {
             frames: Vec::new(),
             conds: Vec::new(),
             scopes: vec![Scope::default()],
-            special_names: false,
+            special_names: Default::default(),
             scene: Scene::default(),
             warnings: Vec::new(),
             depth: 0,
@@ -173,7 +175,7 @@ impl<'w> Evaluator<'w> {
 
     pub fn declare_global(&mut self, name: &str, value: Value) {
         if value.needs_check_in_stream() {
-            self.special_names = true;
+            self.mark_special(name);
         }
         self.scopes[0].insert(Key::of(name), value);
     }
@@ -283,6 +285,17 @@ impl<'w> Evaluator<'w> {
 
     fn leave(&mut self) {
         self.depth = self.depth.saturating_sub(1);
+    }
+
+    /// Marks a name the token stream must look up wherever it appears.
+    fn mark_special(&mut self, name: &str) {
+        let name = super::parse::intern(name);
+        self.special_names.insert(name.as_ptr() as usize);
+    }
+
+    /// Whether a token's (interned) name may be bound to a macro or an unsupported value.
+    fn may_be_special(&self, name: crate::lang::syntax::Name) -> bool {
+        !self.special_names.is_empty() && self.special_names.contains(&(name.as_ptr() as usize))
     }
 
     fn lookup(&self, name: &str) -> Option<&Value> {

@@ -240,8 +240,10 @@ impl Evaluator<'_> {
                 ),
             ));
         }
-        if locals.values().any(Value::needs_check_in_stream) {
-            self.special_names = true;
+        for (key, value) in &locals {
+            if value.needs_check_in_stream() {
+                self.mark_special(key.text());
+            }
         }
         self.scopes.push(locals);
         let eof = def.tokens.get(def.end).map_or(Span::DETACHED, |t| t.span);
@@ -289,7 +291,7 @@ impl Evaluator<'_> {
         {
             match tok.kind {
                 TokenKind::Directive(_) => {}
-                TokenKind::Ident(_) if self.special_names => {}
+                TokenKind::Ident(name) if self.may_be_special(name) => {}
                 _ => return Ok(*tok),
             }
         }
@@ -332,7 +334,7 @@ impl Evaluator<'_> {
                 }
                 // Most names are keywords or plain values: only look them up when some
                 // scope may hold a macro or an unsupported value.
-                TokenKind::Ident(_) if !self.special_names => return Ok(tok),
+                TokenKind::Ident(name) if !self.may_be_special(name) => return Ok(tok),
                 TokenKind::Ident(name) => match self.lookup(name) {
                     Some(Value::Macro(_)) => {
                         self.advance();
@@ -489,7 +491,7 @@ impl Evaluator<'_> {
     /// `#declare I = I + 1` allocates nothing.
     pub(super) fn assign_at(&mut self, name: &str, value: Value, index: usize) {
         if value.needs_check_in_stream() {
-            self.special_names = true;
+            self.mark_special(name);
         }
         let index = index.min(self.scopes.len() - 1);
         match self.scopes[index].get_mut(&NameRef(name)) {
