@@ -98,7 +98,7 @@ impl Kind {
         }
     }
 
-    /// A vector of this kind to type-check operations on: ones, so no division fails.
+    /// A value of this kind to type-check operations on: ones, so no division fails.
     fn sample(self) -> Value {
         match self {
             Kind::Float => Value::Float(1.0),
