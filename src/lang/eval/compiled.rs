@@ -25,8 +25,8 @@ use std::rc::Rc;
 use super::super::diagnostics::Span;
 use super::super::syntax::{Name, Punct, Token, TokenKind};
 use super::expr::{
-    Context, Level, compare_floats, continues_operand, ends_operand, fixed_constant, is_true,
-    operator_level, starts_next_component, unary_operator,
+    Context, Level, continues_operand, ends_operand, fixed_constant, float_binary, float_unary,
+    is_true, operator_level, starts_next_component, unary_operator,
 };
 use super::functions;
 use super::stream::{Cond, FrameKind, NameHasher};
@@ -328,11 +328,7 @@ impl Evaluator<'_> {
             }
             Op::FloatUnary(p) => {
                 let x = s.pop_float();
-                s.push_float(if p == Punct::Minus {
-                    -x
-                } else {
-                    f64::from(u8::from(!is_true(x)))
-                });
+                s.push_float(float_unary(p, x));
             }
             Op::FloatCall(f) => {
                 let x = s.pop_float();
@@ -423,21 +419,6 @@ impl Evaluator<'_> {
         }
         Some(())
     }
-}
-
-/// `x p y` as the interpreter computes it (`apply`); `None` for a division by zero.
-fn float_binary(p: Punct, x: f64, y: f64) -> Option<f64> {
-    let truth = |t: bool| f64::from(u8::from(t));
-    Some(match p {
-        Punct::Plus => x + y,
-        Punct::Minus => x - y,
-        Punct::Star => x * y,
-        Punct::Slash if y == 0.0 => return None,
-        Punct::Slash => x / y,
-        Punct::Pipe => truth(is_true(x) || is_true(y)),
-        Punct::Amp => truth(is_true(x) && is_true(y)),
-        _ => truth(compare_floats(p, x, y)),
-    })
 }
 
 /// Reads an expression's tokens as the interpreter would, without running anything, and

@@ -225,6 +225,11 @@ impl Evaluator<'_> {
         (b, sb): (&Value, Span),
         at: Span,
     ) -> R<Value> {
+        if let (Value::Float(x), Value::Float(y)) = (a, b) {
+            return float_binary(p, *x, *y)
+                .map(Value::Float)
+                .ok_or_else(|| self.err(at, "division by zero"));
+        }
         let truth = |t: bool| Value::Float(f64::from(u8::from(t)));
         let op = match p {
             Punct::Pipe => return Ok(truth(self.truthy(a, sa)? || self.truthy(b, sb)?)),
@@ -267,6 +272,11 @@ impl Evaluator<'_> {
 
     /// `-v`, `+v` or `!v`.
     pub(super) fn apply_unary(&self, p: Punct, v: Value, span: Span) -> R<Value> {
+        if let Value::Float(x) = v
+            && p != Punct::Plus
+        {
+            return Ok(Value::Float(float_unary(p, x)));
+        }
         match p {
             Punct::Minus => negate(&v).map_err(|m| self.err(span, m)),
             Punct::Bang => Ok(Value::Float(f64::from(u8::from(!self.truthy(&v, span)?)))),
@@ -667,6 +677,31 @@ use super::placement::normal_name as placement_normal_name;
 /// Whether a float counts as true: farther from zero than POV-Ray's tolerance.
 pub(super) fn is_true(x: f64) -> bool {
     x.abs() > EPSILON
+}
+
+/// `x p y` for any binary operator between floats, the one table the interpreter and the
+/// compiled expressions share; `None` for a division by zero.
+pub(super) fn float_binary(p: Punct, x: f64, y: f64) -> Option<f64> {
+    let truth = |t: bool| f64::from(u8::from(t));
+    Some(match p {
+        Punct::Plus => x + y,
+        Punct::Minus => x - y,
+        Punct::Star => x * y,
+        Punct::Slash if y == 0.0 => return None,
+        Punct::Slash => x / y,
+        Punct::Pipe => truth(is_true(x) || is_true(y)),
+        Punct::Amp => truth(is_true(x) && is_true(y)),
+        _ => truth(compare_floats(p, x, y)),
+    })
+}
+
+/// `-x` or `!x` of a float.
+pub(super) fn float_unary(p: Punct, x: f64) -> f64 {
+    if p == Punct::Minus {
+        -x
+    } else {
+        f64::from(u8::from(!is_true(x)))
+    }
 }
 
 /// `x p y` for a comparison operator `p`.
