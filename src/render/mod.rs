@@ -24,7 +24,7 @@ use rayon::prelude::*;
 
 pub use film::{Film, PixelSum};
 pub use integrator::{Integrator, RayCounts, Splitting};
-pub use lights::{AreaLightMode, COVER_SHARED, LightSamples};
+pub use lights::{AreaLightMode, LightSamples};
 pub use prepared::PreparedScene;
 pub use sampler::PixelSampler;
 

@@ -11,9 +11,7 @@ use crate::appearance::{perturbed_normal, texture_layers};
 use crate::geometry::{Hit, Ray, offset_point};
 use crate::render::dimensions::Purpose;
 use crate::render::lights::LightSamples;
-use crate::render::lights::{
-    AreaLightMode, COVER_SHARED, PreparedArea, PreparedLight, WeightOrder,
-};
+use crate::render::lights::{AreaLightMode, GOLDEN, PreparedArea, PreparedLight, WeightOrder};
 use crate::render::prepared::{Material, PreparedScene};
 use crate::render::sampler::{PixelSampler, permute};
 use crate::scene::{Colour, Finish, LightGroup};
@@ -22,10 +20,6 @@ use super::interiors::InteriorStack;
 use super::optics::{caustic_factor, fade};
 use super::{Integrator, RayCounts, Shading};
 use crate::render::fog::{Segment, light_through_fog};
-
-/// Spreads several light samples: point k of n is shifted by (k/n, k * golden ratio mod 1),
-/// a well-spread 2D set for any n.
-const GOLDEN: f64 = 0.618_033_988_749_894_9;
 
 /// Crossings a shadow ray keeps track of; past this many, further ones neither fade nor
 /// are told apart from crossings at the same distance.
@@ -138,94 +132,190 @@ impl Integrator<'_> {
         counts: &mut RayCounts,
     ) -> DVec3 {
         let mut colour = layer.ambient_and_emission(self.ambient_light);
-        for index in 0..self.scene.lights.len() {
-            if !LightGroup::lights(self.scene.lights[index].group, s.material.light_group) {
+        for (index, light) in self.scene.lights.iter().enumerate() {
+            if !LightGroup::lights(light.group, s.material.light_group) {
                 continue;
             }
-            let back_lit = layer.finish.diffuse_back != 0.0;
-            let Some((at, mut light)) = self.light_arriving(s, index, back_lit, sampler, counts)
-            else {
-                continue;
+            colour += match self.summed_grid(light) {
+                Some(area) => self.grid_light(s, layer, index, area, sampler, counts),
+                None => self.one_light(s, layer, index, sampler, counts),
             };
-            if let Some(irid) = &layer.finish.irid {
-                let wavelength = self.scene.settings.irid_wavelength;
-                let n_dot_v = -at.n.dot(at.d);
-                light *= irid_factor(irid, wavelength, at.n_dot_l, n_dot_v, s.surface.point);
-            }
-            colour += layer.diffuse(at.n_dot_l, light, at.behind);
-            // Radiosity rays see no highlights (measured: phong on a furnace's wall adds
-            // only what the camera sees of it), nor does light through the back.
-            if !self.scene.lights[index].shadowless
-                && !at.behind
-                && s.path.bounces == 0
-                && let Some(h) = layer.highlight(&at, light)
-            {
-                colour += h;
-            }
         }
         colour
     }
 
-    /// The geometry and the shadowed colour of light `index` at the shading point, or
-    /// `None` where it adds nothing. A light behind the surface counts where the surface
-    /// is double-illuminated or `back_lit` (its diffuse has a second value).
-    fn light_arriving(
+    /// The area light whose shading is summed over its grid: area_illumination in `pov`
+    /// mode.
+    fn summed_grid<'l>(&self, light: &'l PreparedLight) -> Option<&'l PreparedArea> {
+        let summed = light.area_illumination
+            && self.area_lights == AreaLightMode::Pov
+            && self.quality >= super::QUALITY_AREA_LIGHTS;
+        light.area.as_ref().filter(|_| summed)
+    }
+
+    /// Light `index` shading the layer from one direction, shadowed.
+    fn one_light(
+        &self,
+        s: &Shading,
+        layer: &ShadedLayer,
+        index: usize,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        let light = &self.scene.lights[index];
+        let Some(incidence) = self.incidence(s, light, index as u32, sampler) else {
+            return DVec3::ZERO;
+        };
+        let back_lit = layer.finish.diffuse_back != 0.0;
+        let Some(facing) = facing(s, incidence.l, back_lit) else {
+            return DVec3::ZERO;
+        };
+        let colour = light.colour * incidence.factor;
+        if colour == DVec3::ZERO {
+            return DVec3::ZERO;
+        }
+        let side = facing.flipped.then_some(incidence.l);
+        let query = self.shadow_query(s, index, side, colour);
+        let filter = self.shadowed(&query, &incidence, sampler, counts);
+        if filter == DVec3::ZERO {
+            return DVec3::ZERO;
+        }
+        self.light_on_layer(s, layer, index, &facing.at, colour * filter)
+    }
+
+    /// area_illumination in `pov` mode: POV-Ray sums the finish over every grid point with
+    /// equal weights, so each sample averages it over several points spread over the grid
+    /// (`PreparedArea::shaded_points`; one point per sample left the grid's spread of
+    /// directions as noise over every lit surface). The shadow rays are as for a light
+    /// without it: the visibility is the grid's, tested once for each side of the surface
+    /// the points light. Each point is as likely to be shaded as any other and jittered
+    /// afresh, so the expectation is POV-Ray's: the average shading of the grid times the
+    /// visibility of its side.
+    fn grid_light(
+        &self,
+        s: &Shading,
+        layer: &ShadedLayer,
+        index: usize,
+        area: &PreparedArea,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        let light = &self.scene.lights[index];
+        let p = s.surface.point;
+        let back_lit = layer.finish.diffuse_back != 0.0;
+        let dim = self
+            .layout
+            .dimension(s.path.block(), Purpose::LightShading(index as u32));
+        sampler.set_dimension(dim);
+        let s2 = sampler.get_2d();
+        let mut jitter = sampler.free_stream(dim);
+        let frame = area.frame(light.location, light.location - p);
+        let points = area.shaded_points();
+        // The shading of the points lighting the front, and of those lighting the back,
+        // with the incidence of one of them (the side shadow rays start from).
+        let mut sides = [(DVec3::ZERO, None); 2];
+        for k in area.spread_points(points, s2) {
+            let at = area.point_at(&frame, k, (jitter.next_f64(), jitter.next_f64()));
+            let Some(incidence) = light.incidence_from(p, at) else {
+                continue;
+            };
+            let Some(facing) = facing(s, incidence.l, back_lit) else {
+                continue;
+            };
+            let colour = light.colour * incidence.factor;
+            let side = &mut sides[usize::from(facing.flipped)];
+            side.0 += self.light_on_layer(s, layer, index, &facing.at, colour);
+            side.1 = Some(incidence);
+        }
+        // The centre's light, which POV-Ray's adaptive rule compares.
+        let centre = light
+            .incidence(p)
+            .map_or(light.colour, |c| light.colour * c.factor);
+        let mut colour = DVec3::ZERO;
+        for (flipped, (sum, incidence)) in sides.into_iter().enumerate() {
+            if let Some(incidence) = incidence.filter(|_| sum != DVec3::ZERO) {
+                let side = (flipped == 1).then_some(incidence.l);
+                let query = self.shadow_query(s, index, side, centre);
+                colour += sum * self.shadowed(&query, &incidence, sampler, counts);
+            }
+        }
+        colour / f64::from(points)
+    }
+
+    /// What light `index` of colour `light` (shadowed) along `at` adds to the layer:
+    /// diffuse and highlights, through the layer's iridescence.
+    fn light_on_layer(
+        &self,
+        s: &Shading,
+        layer: &ShadedLayer,
+        index: usize,
+        at: &LightAt,
+        mut light: DVec3,
+    ) -> DVec3 {
+        if let Some(irid) = &layer.finish.irid {
+            let wavelength = self.scene.settings.irid_wavelength;
+            let n_dot_v = -at.n.dot(at.d);
+            light *= irid_factor(irid, wavelength, at.n_dot_l, n_dot_v, s.surface.point);
+        }
+        let mut colour = layer.diffuse(at.n_dot_l, light, at.behind);
+        // Radiosity rays see no highlights (measured: phong on a furnace's wall adds
+        // only what the camera sees of it), nor does light through the back.
+        if !self.scene.lights[index].shadowless
+            && !at.behind
+            && s.path.bounces == 0
+            && let Some(h) = layer.highlight(at, light)
+        {
+            colour += h;
+        }
+        colour
+    }
+
+    /// The shadow test towards light `index` from the viewer's side of the surface, or
+    /// from the other side, towards `behind`, where the light shines on the side the
+    /// shading normal does not face: its shadow ray starts on the light's side, or it would
+    /// cross the surface it leaves.
+    fn shadow_query(
         &self,
         s: &Shading,
         index: usize,
-        back_lit: bool,
-        sampler: &mut PixelSampler,
-        counts: &mut RayCounts,
-    ) -> Option<(LightAt, DVec3)> {
-        let light = &self.scene.lights[index];
-        let incidence = self.incidence(s, light, index as u32, sampler)?;
-        let l = incidence.l;
-        let mut n_dot_l = s.n.dot(l);
-        // A surface lit from behind: its shadow ray starts on the light's side, or it
-        // would cross the surface it leaves.
-        let mut origin = s.shadow_origin;
-        let mut inside = s.path.interiors;
-        let behind = n_dot_l <= 0.0 && !s.material.double_illuminate;
-        if n_dot_l <= 0.0 {
-            if behind && !back_lit {
-                return None;
+        behind: Option<DVec3>,
+        colour: DVec3,
+    ) -> ShadowQuery<'_> {
+        let (origin, inside) = match behind {
+            Some(l) => {
+                let origin = offset_point(s.surface.point, s.surface.normal, l);
+                (origin, super::crossing(s).2)
             }
-            n_dot_l = -n_dot_l;
-            origin = offset_point(s.surface.point, s.surface.normal, l);
-            inside = super::crossing(s).2;
-        }
-        let mut colour = light.colour * incidence.factor;
-        if colour == DVec3::ZERO {
-            return None;
-        }
-        if !light.shadowless && self.quality >= super::QUALITY_SHADOWS {
-            let query = ShadowQuery {
-                light,
-                index: index as u32,
-                level: s.path.block(),
-                p: s.surface.point,
-                origin,
-                inside,
-                colour,
-            };
-            let filter = self.visibility(&query, l, incidence.distance, sampler, counts);
-            if filter == DVec3::ZERO {
-                return None;
-            }
-            colour *= filter;
-        }
-        let at = LightAt {
-            n: s.n,
-            d: s.d,
-            l,
-            n_dot_l,
-            behind,
+            None => (s.shadow_origin, s.path.interiors),
         };
-        Some((at, colour))
+        ShadowQuery {
+            light: &self.scene.lights[index],
+            index: index as u32,
+            level: s.path.block(),
+            p: s.surface.point,
+            origin,
+            inside,
+            colour,
+        }
     }
 
-    /// Where the light comes from. With area_illumination, shading comes from one grid
-    /// point drawn with equal weights, independently of the shadow test: the product of the
+    /// The fraction of the light the query's point receives (all of it from a shadowless
+    /// light, or below the quality that casts shadows).
+    fn shadowed(
+        &self,
+        q: &ShadowQuery,
+        incidence: &crate::render::lights::Incidence,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        if q.light.shadowless || self.quality < super::QUALITY_SHADOWS {
+            return DVec3::ONE;
+        }
+        self.visibility(q, incidence.l, incidence.distance, sampler, counts)
+    }
+
+    /// Where the light comes from: its centre, or with area_illumination (in `continuous`
+    /// mode) a point drawn uniformly, independently of the shadow test: the product of the
     /// average shading and the visibility.
     fn incidence(
         &self,
@@ -242,7 +332,7 @@ impl Integrator<'_> {
                     .dimension(s.path.block(), Purpose::LightShading(index));
                 sampler.set_dimension(dim);
                 let frame = area.frame(light.location, light.location - p);
-                let at = area.sample_point(&frame, sampler.get_2d(), self.area_lights, true);
+                let at = area.sample_point(&frame, sampler.get_2d(), self.area_lights);
                 light.incidence_from(p, at)
             }
             _ => light.incidence(p),
@@ -405,7 +495,7 @@ impl Integrator<'_> {
         for k in 0..n {
             let shift = (k as f64 / n as f64, (k as f64 * GOLDEN).fract());
             let sk = ((s.0 + shift.0).fract(), (s.1 + shift.1).fract());
-            sum += shadow_to(area.sample_point(&frame, sk, self.area_lights, false));
+            sum += shadow_to(area.sample_point(&frame, sk, self.area_lights));
         }
         sum / n as f64
     }
@@ -496,6 +586,33 @@ impl Integrator<'_> {
     }
 }
 
+/// A light along `l` (unit) as the shading point sees it, or `None` where it does not
+/// light that side: a light behind the surface counts where the surface is
+/// double-illuminated or `back_lit` (its diffuse has a second value).
+fn facing(s: &Shading, l: DVec3, back_lit: bool) -> Option<Facing> {
+    let n_dot_l = s.n.dot(l);
+    let flipped = n_dot_l <= 0.0;
+    let behind = flipped && !s.material.double_illuminate;
+    if behind && !back_lit {
+        return None;
+    }
+    let at = LightAt {
+        n: s.n,
+        d: s.d,
+        l,
+        n_dot_l: n_dot_l.abs(),
+        behind,
+    };
+    Some(Facing { at, flipped })
+}
+
+/// A light's geometry at a shading point, and whether it is on the side the normal does
+/// not face (where shadow rays start).
+struct Facing {
+    at: LightAt,
+    flipped: bool,
+}
+
 /// The fake caustics of `material`'s interior where a shadow ray crosses its surface at
 /// `hit`, from the angle to the perturbed normal ([`caustic_factor`]).
 fn caustics_at(scene: &PreparedScene, ray: &Ray, hit: &Hit, material: &Material) -> f64 {
@@ -513,19 +630,19 @@ fn caustics_at(scene: &PreparedScene, ray: &Ray, hit: &Hit, material: &Material)
 /// The light's grid shared out over the pixel's samples, each point tested as often as any
 /// other and each sample weighing what it tests to the whole light. The grid's points lie
 /// end to end on a line, each as long as its weight in POV-Ray's grid sum ([`WeightOrder`],
-/// one random order per pixel); R = ceil(N / 16) turns of that line are cut into N equal
+/// one random order per pixel); R = ceil(N / C) turns of that line are cut into N equal
 /// blocks, and sample k tests the points of block pi(k) (pi a random permutation), each
 /// counted by the length of it inside the block, over the block's length. So:
 /// - each sample weighs its points to 1: a point fully lit or fully shadowed has no noise,
 ///   whatever the shading does across the pixel;
 /// - over the pixel every point counts exactly R times its weight: a penumbra that does not
 ///   change across the pixel gives POV-Ray's grid sum exactly, and one that does changes
-///   only through the positions each point is seen from, one more of them for every 16
-///   samples ([`COVER_SHARED`]);
+///   only through the positions each point is seen from, one more of them for every C
+///   samples (`PreparedArea::cover_shared`: 16, or 2 for a jittered light);
 /// - unbiased: pi(k) is any block with equal chance, and over the blocks each point counts
 ///   R times its weight, a 1/N share of it on average per block, block length R/N.
 ///
-/// Each sample tests about K / min(N, 16) + 1 points of a K-point grid.
+/// Each sample tests about K / min(N, C) + 1 points of a K-point grid.
 fn cover_grid(
     q: &ShadowQuery,
     area: &PreparedArea,
@@ -534,7 +651,7 @@ fn cover_grid(
     shadow_to: &mut dyn FnMut(DVec3) -> DVec3,
 ) -> DVec3 {
     let n = sampler.samples_per_pixel();
-    let line = u128::from(n.div_ceil(COVER_SHARED)) * u128::from(WeightOrder::TOTAL);
+    let line = u128::from(n.div_ceil(area.cover_shared())) * u128::from(WeightOrder::TOTAL);
     let block = u128::from(permute(sampler.index(), n, sampler.pixel_seed(dim, 1)));
     let (start, end) = (
         line * block / u128::from(n),

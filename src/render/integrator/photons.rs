@@ -186,7 +186,7 @@ fn area_origin(light: &PreparedLight, target: &Aabb, rng: &mut Pcg32) -> Option<
     let towards = light.location - (target.min + target.max) * 0.5;
     let frame = area.frame(light.location, towards);
     let s = (unit_f64(rng), unit_f64(rng));
-    Some(area.sample_point(&frame, s, AreaLightMode::Continuous, true))
+    Some(area.sample_point(&frame, s, AreaLightMode::Continuous))
 }
 
 /// Every target's beam as if the light stood at `origin`, written into `beams`.
