@@ -1,10 +1,12 @@
 //! Stratified, jittered, deterministic samples.
 //!
 //! Every value is a pure function of (pixel, sample index, dimension, seed) and the pixel's
-//! sample count: the strata of each dimension are permuted independently per pixel (as in
-//! pbrt-v4's stratified sampler), and the jitter inside a stratum comes from a PCG generator
-//! seeded by a hash. So any range of sample indices can be rendered alone, on any machine and
-//! in any order, and the parts sum to exactly the full render.
+//! sample count: a 1D value is jittered in one of `n` strata, a 2D value is a point of an
+//! Owen-scrambled Sobol (0, 2)-sequence (as pbrt-v4's padded Sobol sampler), the sample's
+//! stratum or point chosen by a permutation of the indices drawn independently per pixel
+//! and dimension, and the jitter and scrambling come from hashes. So any range of sample
+//! indices can be rendered alone, on any machine and in any order, and the parts sum to
+//! exactly the full render.
 
 use rand::Rng;
 use rand_pcg::Pcg32;
@@ -16,9 +18,6 @@ pub struct PixelSampler {
     index: u32,
     samples_per_pixel: u32,
     dimension: u32,
-    /// `samples_per_pixel = nx * ny`, the 2D strata grid (nx <= ny, as square as divides).
-    nx: u32,
-    ny: u32,
     /// False: every value is an independent uniform draw (no strata), the baseline whose
     /// noise falls exactly as N^-1/2, against which the convergence tests measure what
     /// stratification gains.
@@ -27,19 +26,11 @@ pub struct PixelSampler {
 
 impl PixelSampler {
     pub fn new(samples_per_pixel: u32) -> PixelSampler {
-        let spp = samples_per_pixel.max(1);
-        let nx = (1..=spp)
-            .take_while(|d| d * d <= spp)
-            .filter(|d| spp.is_multiple_of(*d))
-            .last()
-            .unwrap_or(1);
         PixelSampler {
             pixel_key: 0,
             index: 0,
-            samples_per_pixel: spp,
+            samples_per_pixel: samples_per_pixel.max(1),
             dimension: 0,
-            nx,
-            ny: spp / nx,
             stratified: true,
         }
     }
@@ -63,11 +54,19 @@ impl PixelSampler {
         self.dimension = 0;
     }
 
+    /// The hash of this pixel's `dimension`, shared by its samples.
+    fn key(&self, dimension: u32) -> u64 {
+        mix(self.pixel_key ^ mix(dimension as u64 + 1))
+    }
+
+    /// This sample's own generator in the dimension of `key`.
+    fn jitter(&self, key: u64) -> Pcg32 {
+        Pcg32::new(mix(key ^ self.index as u64), key | 1)
+    }
+
     fn stream(&self, dimension: u32) -> (u32, Pcg32) {
-        let key = mix(self.pixel_key ^ mix(dimension as u64 + 1));
-        let stratum_seed = (key >> 32) as u32;
-        let jitter = Pcg32::new(mix(key ^ self.index as u64), key | 1);
-        (stratum_seed, jitter)
+        let key = self.key(dimension);
+        ((key >> 32) as u32, self.jitter(key))
     }
 
     /// One value in [0, 1), stratified over the pixel's samples.
@@ -82,21 +81,26 @@ impl PixelSampler {
         (stratum as f64 + unit_f64(&mut rng)) / n as f64
     }
 
-    /// Two values in [0, 1)^2, stratified on an nx x ny grid over the pixel's samples.
+    /// Two values in [0, 1)^2: the pixel's n samples take the first n points of a Sobol
+    /// (0, 2)-sequence, Owen-scrambled per pixel and dimension. Each point is uniform; n = 2^k
+    /// of them are a (0, k, 2)-net (one point in each of the 2^k cells of every grid
+    /// 2^a x 2^(k-a)), and any n holds the nets of its binary digits. Against the jittered
+    /// grid as square as divides n that came before, RMSE against POV-Ray at 640x480 fell
+    /// 6-24% in uniform renders and 0-21% in adaptive ones, whose counts are any n, where
+    /// a grid degrades to strips (docs/differences.md).
     pub fn get_2d(&mut self) -> (f64, f64) {
-        let (perm_seed, mut rng) = self.stream(self.dimension);
+        let key = self.key(self.dimension);
         self.dimension += 2;
-        let jx = unit_f64(&mut rng);
-        let jy = unit_f64(&mut rng);
         if !self.stratified {
-            return (jx, jy);
+            let mut rng = self.jitter(key);
+            return (unit_f64(&mut rng), unit_f64(&mut rng));
         }
-        let stratum = permute(self.index, self.samples_per_pixel, perm_seed);
-        let (sx, sy) = (stratum % self.nx, stratum / self.nx);
-        (
-            (sx as f64 + jx) / self.nx as f64,
-            (sy as f64 + jy) / self.ny as f64,
-        )
+        let j = permute(self.index, self.samples_per_pixel, (key >> 32) as u32);
+        let scramble = mix(key);
+        let x = owen_scramble(j.reverse_bits(), scramble as u32);
+        let y = owen_scramble(sobol_second(j), (scramble >> 32) as u32);
+        let unit = |v: u32| (f64::from(v) + 0.5) * (1.0 / 4_294_967_296.0);
+        (unit(x), unit(y))
     }
 
     /// Sample `j` of `n` drawn in place of this one: the same pixel, its values from sample
@@ -157,6 +161,34 @@ pub(crate) fn unit_f64(rng: &mut Pcg32) -> f64 {
     let hi = rng.next_u32() as u64;
     let lo = rng.next_u32() as u64;
     ((hi << 21) ^ lo) as f64 * (1.0 / (1u64 << 53) as f64)
+}
+
+/// The second dimension of Sobol's sequence at index `j`, as a 32-bit fraction (the first
+/// is `j.reverse_bits()`): direction numbers v_1 = 1/2, v_(k+1) = v_k xor v_k / 2.
+fn sobol_second(mut j: u32) -> u32 {
+    let (mut y, mut v) = (0u32, 1u32 << 31);
+    while j != 0 {
+        if j & 1 != 0 {
+            y ^= v;
+        }
+        j >>= 1;
+        v ^= v >> 1;
+    }
+    y
+}
+
+/// Owen's nested uniform scrambling of a 32-bit fraction, by hashing (Burley, "Practical
+/// Hash-based Owen Scrambling", JCGT 2020): each bit is flipped by a hash of the bits above
+/// it, which permutes the strata at every level, keeps nets nets and makes each point
+/// uniform.
+fn owen_scramble(x: u32, seed: u32) -> u32 {
+    let mut v = x.reverse_bits();
+    v = v.wrapping_add(seed);
+    v ^= v.wrapping_mul(0x6c50_b47c);
+    v ^= v.wrapping_mul(0xb82f_1e52);
+    v ^= v.wrapping_mul(0xc7af_e638);
+    v ^= v.wrapping_mul(0x8d22_f6e6);
+    v.reverse_bits()
 }
 
 /// A 64-bit finaliser (SplitMix64's) to turn structured keys into well-mixed seeds.
@@ -267,21 +299,71 @@ mod tests {
     fn each_stratum_is_hit_once_per_dimension() {
         for spp in [1u32, 4, 16, 32, 64, 7] {
             let mut s = PixelSampler::new(spp);
-            let mut hits1 = vec![0u32; spp as usize];
-            let mut hits2 = vec![0u32; spp as usize];
-            let (nx, ny) = (s.nx, s.ny);
-            assert_eq!(nx * ny, spp);
+            let mut hits = vec![0u32; spp as usize];
             for i in 0..spp {
                 s.start(5, 9, i, 3);
-                let a = s.get_1d();
-                let (u, v) = s.get_2d();
-                hits1[(a * spp as f64) as usize] += 1;
-                let cell = (v * ny as f64) as u32 * nx + (u * nx as f64) as u32;
-                hits2[cell as usize] += 1;
+                hits[(s.get_1d() * spp as f64) as usize] += 1;
             }
-            assert!(hits1.iter().all(|&h| h == 1), "1D spp {spp}: {hits1:?}");
-            assert!(hits2.iter().all(|&h| h == 1), "2D spp {spp}: {hits2:?}");
+            assert!(hits.iter().all(|&h| h == 1), "1D spp {spp}: {hits:?}");
         }
+    }
+
+    /// The 2D points of n samples hold a (0, k, 2)-net for the largest 2^k <= n: every
+    /// 2^a x 2^(k-a) grid has each cell hit at least once, exactly once when n = 2^k, and
+    /// at most twice otherwise.
+    #[test]
+    fn two_dimensional_points_are_nets() {
+        for spp in [1u32, 2, 4, 8, 16, 32, 64, 256, 3, 7, 12, 100] {
+            let k = 31 - spp.leading_zeros();
+            for dimension in [0, 2, 6] {
+                let mut s = PixelSampler::new(spp);
+                let points: Vec<(f64, f64)> = (0..spp)
+                    .map(|i| {
+                        s.start(5, 9, i, 3);
+                        s.set_dimension(dimension);
+                        s.get_2d()
+                    })
+                    .collect();
+                for a in 0..=k {
+                    let (cols, rows) = (1u32 << a, 1u32 << (k - a));
+                    let mut hits = vec![0u32; (cols * rows) as usize];
+                    for &(u, v) in &points {
+                        let cell =
+                            (v * f64::from(rows)) as u32 * cols + (u * f64::from(cols)) as u32;
+                        hits[cell as usize] += 1;
+                    }
+                    let most = if spp.is_power_of_two() { 1 } else { 2 };
+                    assert!(
+                        hits.iter().all(|&h| (1..=most).contains(&h)),
+                        "spp {spp}, grid {cols}x{rows}: {hits:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// Each point is uniform (the scrambling's promise): over 4000 pixels of 5 samples the
+    /// points fall evenly in 8 x 8 bins. Pearson's statistic has 63 degrees of freedom
+    /// (mean 63, deviation 11.2) for independent points and less spread for stratified
+    /// ones; 63 + 6 deviations = 130 is passed by chance with probability below 1e-6.
+    #[test]
+    fn two_dimensional_points_are_uniform() {
+        let mut bins = [0u32; 64];
+        let mut s = PixelSampler::new(5);
+        for pixel in 0..4000 {
+            for i in 0..5 {
+                s.start(pixel % 64, pixel / 64, i, 11);
+                s.set_dimension(4);
+                let (u, v) = s.get_2d();
+                bins[(v * 8.0) as usize * 8 + (u * 8.0) as usize] += 1;
+            }
+        }
+        let expected = 20_000.0 / 64.0;
+        let chi2: f64 = bins
+            .iter()
+            .map(|&b| (f64::from(b) - expected).powi(2) / expected)
+            .sum();
+        assert!(chi2 < 130.0, "chi2 {chi2}: {bins:?}");
     }
 
     #[test]
