@@ -27,6 +27,9 @@ for scene in scenes/*.pov; do
     --threads "$THREADS" --povray --output-dir "$out/$name" > /dev/null
 done
 
+# The 640x480 section is written by hand around docs/convergence/640/table.md (made by
+# bench640.sh, which takes an hour): kept as it is.
+at640=$(awk '/^## At 640x480/ { keep = 1 } /^\*\*Machine:\*\*/ { keep = 0 } keep' docs/convergence.md)
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//' || true)
 povray_version=$(povray --version 2>&1 | grep -m1 -o 'POV-Ray [0-9.]*[0-9]' || echo 'POV-Ray')
 {
@@ -41,6 +44,10 @@ It runs \`penumbra converge SCENE --reference REF.exr --spp $SPP --seeds $SEEDS 
 for every scene in \`scenes/\`, at 160x120 against the scene's POV-Ray reference
 (\`tests/references/\`: POV-Ray rendered 16 times larger without anti-aliasing and
 block-averaged; the 8x render beside it bounds the reference's own error).
+
+HEADER
+  echo "$at640"
+  cat <<HEADER
 
 **Machine:** ${cpu:-unknown CPU}, $(nproc) cores (shared with other jobs while measured, so
 single timings are noisy), $THREADS threads for penumbra and for POV-Ray (\`+WT$THREADS\`);
