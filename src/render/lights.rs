@@ -147,8 +147,9 @@ pub enum LightSamples {
     Fixed(u32),
     /// With POV-Ray's grid (`--area-lights pov`), as many as it takes for a pixel's samples
     /// together to test every grid point, by weight, once for every
-    /// [`PreparedArea::cover_shared`] of them: POV-Ray's shadow rays per pixel, shared among the pixel's samples instead of
-    /// spent on each (`cover_grid` in the integrator). Otherwise one.
+    /// [`PreparedArea::cover_shared`] of them: POV-Ray's shadow rays per pixel, shared
+    /// among the pixel's samples instead of spent on each (`cover_grid` in the
+    /// integrator). Otherwise one.
     Cover,
 }
 
