@@ -20,7 +20,7 @@ impl PixelSum {
     #[inline]
     pub fn add(&mut self, rgb: [f64; 3]) {
         for ((sum, square), v) in self.rgb.iter_mut().zip(&mut self.squares).zip(rgb) {
-            let q = (v * SCALE).round() as i64;
+            let q = to_fixed(v * SCALE);
             *sum = sum.saturating_add(q);
             *square = square.saturating_add(u128::from(q.unsigned_abs()).pow(2));
         }
@@ -102,9 +102,52 @@ impl Film {
     }
 }
 
+/// `x.round() as i64` (halves away from zero) without calling `round`, a library function on
+/// processors without SSE4.1 (3.5% of an empty scene's render): the truncation `as i64` is
+/// exact, and so is the fraction it leaves below 2^52, where every double is whole.
+fn to_fixed(x: f64) -> i64 {
+    if x.is_nan() || x.abs() >= 4_503_599_627_370_496.0 {
+        return x as i64;
+    }
+    let t = x as i64;
+    let fraction = x - t as f64;
+    t + i64::from(fraction >= 0.5) - i64::from(fraction <= -0.5)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fixed_point_rounds_as_round_does() {
+        use rand::RngExt;
+        let mut rng = rand_pcg::Pcg32::new(7, 9);
+        let edges = [
+            0.5,
+            -0.5,
+            1.5,
+            -2.5,
+            0.499_999_999_999_999_94,
+            4_503_599_627_370_495.5,
+        ];
+        let huge = [
+            1e300,
+            -1e300,
+            f64::MAX,
+            9.3e18,
+            -9.3e18,
+            0.0,
+            -0.0,
+            f64::NAN,
+        ];
+        let random = (0..100_000).map(|_| {
+            let (m, e) = (rng.random::<f64>() - 0.5, rng.random_range(-8..60));
+            m * 2f64.powi(e)
+        });
+        for x in edges.into_iter().chain(huge).chain(random) {
+            assert_eq!(to_fixed(x), x.round() as i64, "{x}");
+        }
+    }
 
     #[test]
     fn split_sums_merge_exactly() {

@@ -97,8 +97,10 @@ impl PixelSampler {
         }
         let j = permute(self.index, self.samples_per_pixel, (key >> 32) as u32);
         let scramble = mix(key);
-        let x = owen_scramble(j.reverse_bits(), scramble as u32);
-        let y = owen_scramble(sobol_second(j), (scramble >> 32) as u32);
+        // Sobol's first two dimensions are j.reverse_bits() and sobol_second(j); the
+        // scrambling works on their bits reversed, which are j and sobol_second_reversed(j).
+        let x = owen_scrambled_reversed(j, scramble as u32);
+        let y = owen_scrambled_reversed(sobol_second_reversed(j), (scramble >> 32) as u32);
         let unit = |v: u32| (f64::from(v) + 0.5) * (1.0 / 4_294_967_296.0);
         (unit(x), unit(y))
     }
@@ -163,27 +165,26 @@ pub(crate) fn unit_f64(rng: &mut Pcg32) -> f64 {
     ((hi << 21) ^ lo) as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
-/// The second dimension of Sobol's sequence at index `j`, as a 32-bit fraction (the first
-/// is `j.reverse_bits()`): direction numbers v_1 = 1/2, v_(k+1) = v_k xor v_k / 2.
-fn sobol_second(mut j: u32) -> u32 {
-    let (mut y, mut v) = (0u32, 1u32 << 31);
+/// The second dimension of Sobol's sequence at index `j` (a 32-bit fraction) with its bits
+/// reversed: direction numbers v_1 = 1/2, v_(k+1) = v_k xor v_k / 2, reversed.
+fn sobol_second_reversed(mut j: u32) -> u32 {
+    let (mut y, mut v) = (0u32, 1u32);
     while j != 0 {
         if j & 1 != 0 {
             y ^= v;
         }
         j >>= 1;
-        v ^= v >> 1;
+        v ^= v << 1;
     }
     y
 }
 
-/// Owen's nested uniform scrambling of a 32-bit fraction, by hashing (Burley, "Practical
-/// Hash-based Owen Scrambling", JCGT 2020): each bit is flipped by a hash of the bits above
-/// it, which permutes the strata at every level, keeps nets nets and makes each point
-/// uniform.
-fn owen_scramble(x: u32, seed: u32) -> u32 {
-    let mut v = x.reverse_bits();
-    v = v.wrapping_add(seed);
+/// Owen's nested uniform scrambling of a 32-bit fraction given with its bits reversed
+/// (`reversed`), by hashing (Burley, "Practical Hash-based Owen Scrambling", JCGT 2020):
+/// each bit is flipped by a hash of the bits above it, which permutes the strata at every
+/// level, keeps nets nets and makes each point uniform.
+fn owen_scrambled_reversed(reversed: u32, seed: u32) -> u32 {
+    let mut v = reversed.wrapping_add(seed);
     v ^= v.wrapping_mul(0x6c50_b47c);
     v ^= v.wrapping_mul(0xb82f_1e52);
     v ^= v.wrapping_mul(0xc7af_e638);
