@@ -100,7 +100,7 @@ impl MeshData {
 
     /// Every crossing ahead of the ray's origin, with its face, in no particular order.
     pub fn each_hit(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
-        self.bvh.traverse_any(ray, f64::INFINITY, |face, t_cur| {
+        self.bvh.traverse(ray, f64::INFINITY, |face, t_cur| {
             if let Some(t) = self.face_hit(ray, face)
                 && t > 0.0
             {

@@ -290,11 +290,9 @@ impl ShapeKind {
         match *self {
             // The commonest shapes (every ray meets a scene's floor), tested here without
             // the general dispatch.
-            ShapeKind::Sphere { center, radius } => sphere_roots(ray, center, radius)
-                .as_slice()
-                .iter()
-                .find(|&&t| t > 0.0 && t < t_max)
-                .map(|&t| (t, 0)),
+            ShapeKind::Sphere { center, radius } => {
+                sphere_first_hit(ray, center, radius, t_max).map(|t| (t, 0))
+            }
             ShapeKind::Plane { normal, distance } => {
                 let denom = normal.dot(ray.direction);
                 let t = (distance - normal.dot(ray.origin)) / denom;
@@ -653,6 +651,17 @@ impl ShapeKind {
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }
+}
+
+/// A sphere's first crossing in (0, t_max), for callers that test spheres before any
+/// general dispatch (most items in a scene of many objects are spheres).
+#[inline(always)]
+pub fn sphere_first_hit(ray: &Ray, center: DVec3, radius: f64, t_max: f64) -> Option<f64> {
+    sphere_roots(ray, center, radius)
+        .as_slice()
+        .iter()
+        .find(|&&t| t > 0.0 && t < t_max)
+        .copied()
 }
 
 /// Both roots of the ray-sphere quadratic, ordered, computed without catastrophic

@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 
-use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform};
+use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform, sphere_first_hit};
 
 /// Per-primitive flags, tested as a mask so each kind of ray can skip some.
 pub mod flags {
@@ -590,28 +590,47 @@ impl World {
         }
     }
 
-    /// The nearest hit of one item in (0, t_max).
-    #[inline]
+    /// The nearest hit of one item in (0, t_max). Primitives, most of what leaves hold,
+    /// take an inlined path; CSG nodes and instances the general one.
+    #[inline(always)]
     fn item_hit(&self, item: u32, ray: &Ray, t_max: f64, skip: u8) -> Option<Hit> {
         match decode(item) {
-            Ref::Primitive(i) => {
-                let p = &self.primitives[i];
-                if p.flags & skip != 0 {
-                    return None;
-                }
-                let (t, part) =
-                    p.shape
-                        .intersect_part(&self.local_ray(p, ray), t_max, &self.tables)?;
-                return Some(Hit {
-                    t,
-                    primitive: item,
-                    part,
-                    flipped: p.flags & flags::INVERSE != 0,
-                    instance: NO_INSTANCE,
-                });
-            }
-            Ref::Instance(k) => return self.instances[k].hit(k as u32, ray, t_max, skip),
-            Ref::Csg(_) => {}
+            Ref::Primitive(i) => self.primitive_hit(i, ray, t_max, skip),
+            _ => self.composite_hit(item, ray, t_max, skip),
+        }
+    }
+
+    #[inline(always)]
+    fn primitive_hit(&self, i: usize, ray: &Ray, t_max: f64, skip: u8) -> Option<Hit> {
+        let p = &self.primitives[i];
+        if p.flags & skip != 0 {
+            return None;
+        }
+        // A world-space shape reads the ray in place rather than a copy of it; a sphere,
+        // the commonest, skips the shapes' dispatch.
+        let (t, part) =
+            if let (ShapeKind::Sphere { center, radius }, NO_TRANSFORM) = (p.shape, p.transform) {
+                (sphere_first_hit(ray, center, radius, t_max)?, 0)
+            } else if p.transform == NO_TRANSFORM {
+                p.shape.intersect_part(ray, t_max, &self.tables)?
+            } else {
+                let local = self.transforms[p.transform as usize].inverse_ray(ray);
+                p.shape.intersect_part(&local, t_max, &self.tables)?
+            };
+        Some(Hit {
+            t,
+            primitive: i as u32,
+            part,
+            flipped: p.flags & flags::INVERSE != 0,
+            instance: NO_INSTANCE,
+        })
+    }
+
+    /// The nearest hit of a CSG node or an instance in (0, t_max).
+    #[inline(never)]
+    fn composite_hit(&self, item: u32, ray: &Ray, t_max: f64, skip: u8) -> Option<Hit> {
+        if let Ref::Instance(k) = decode(item) {
+            return self.instances[k].hit(k as u32, ray, t_max, skip);
         }
         let mut best: Option<Hit> = None;
         let mut t_best = t_max;
@@ -657,7 +676,7 @@ impl World {
             Some(index) => {
                 (0..index.first).for_each(|i| visit(i, f));
                 index.unbounded.iter().for_each(|&j| visit(j as usize, f));
-                index.bvh.traverse_any(ray, t_max, |j, t| {
+                index.bvh.traverse(ray, t_max, |j, t| {
                     visit(j as usize, f);
                     Some(t)
                 });
@@ -836,25 +855,30 @@ impl World {
             t_best
         };
         let mut nearest: Option<u32> = None;
-        self.bvh.traverse(ray, t_bounded, |i, t_cur| {
-            // Once a bounded item is met, one at the very same distance is a tie, settled
-            // by the scene's order rather than by the order the tree visits them.
-            let reach = if nearest.is_some() {
-                t_cur.next_up()
-            } else {
-                t_cur
-            };
-            match self.item_hit(i, ray, reach, skip) {
-                Some(hit)
-                    if hit.t < t_cur || nearest.is_some_and(|n| self.declared_before(i, n)) =>
-                {
-                    best = Some(hit);
-                    nearest = Some(i);
-                    Some(hit.t)
+        self.bvh.traverse(
+            ray,
+            t_bounded,
+            #[inline(always)]
+            |i, t_cur| {
+                // Once a bounded item is met, one at the very same distance is a tie, settled
+                // by the scene's order rather than by the order the tree visits them.
+                let reach = if nearest.is_some() {
+                    t_cur.next_up()
+                } else {
+                    t_cur
+                };
+                match self.item_hit(i, ray, reach, skip) {
+                    Some(hit)
+                        if hit.t < t_cur || nearest.is_some_and(|n| self.declared_before(i, n)) =>
+                    {
+                        best = Some(hit);
+                        nearest = Some(i);
+                        Some(hit.t)
+                    }
+                    _ => Some(t_cur),
                 }
-                _ => Some(t_cur),
-            }
-        });
+            },
+        );
         best
     }
 
@@ -878,22 +902,32 @@ impl World {
             return true;
         }
         let mut hit = false;
-        self.bvh.traverse_any(ray, t_max, |i, t_cur| {
-            if self.item_blocks(i, ray, t_cur) {
-                hit = true;
-                return None;
-            }
-            Some(t_cur)
-        });
+        self.bvh.traverse(
+            ray,
+            t_max,
+            #[inline(always)]
+            |i, t_cur| {
+                if self.item_blocks(i, ray, t_cur) {
+                    hit = true;
+                    return None;
+                }
+                Some(t_cur)
+            },
+        );
         hit
     }
 
     /// Whether an item casts a shadow on the ray within (0, t_max).
-    #[inline]
+    #[inline(always)]
     fn item_blocks(&self, item: u32, ray: &Ray, t_max: f64) -> bool {
         match decode(item) {
+            Ref::Primitive(i) => self
+                .primitive_hit(i, ray, t_max, flags::NO_SHADOW)
+                .is_some(),
             Ref::Instance(k) => self.instances[k].blocks(ray, t_max),
-            _ => self.item_hit(item, ray, t_max, flags::NO_SHADOW).is_some(),
+            Ref::Csg(_) => self
+                .composite_hit(item, ray, t_max, flags::NO_SHADOW)
+                .is_some(),
         }
     }
 
@@ -929,7 +963,7 @@ impl World {
                 return false;
             }
         }
-        self.bvh.traverse_any(
+        self.bvh.traverse(
             ray,
             t_max,
             |i, t_cur| if each(i) { Some(t_cur) } else { None },
