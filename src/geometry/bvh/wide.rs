@@ -474,7 +474,7 @@ mod tests {
 
     /// Boxes at exponentially growing distances make the SAH build a chain as deep as its
     /// limits allow: the deepest stack is used, and a ray along the chain still meets every
-    /// box, nearest first, as does a point query for each.
+    /// box, as does a point query for each.
     #[test]
     fn a_deep_tree_is_walked_whole() {
         let bounds: Vec<Aabb> = (0..300)
