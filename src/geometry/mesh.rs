@@ -48,7 +48,7 @@ impl MeshData {
         permute(&mut self.face_normals);
         permute(&mut self.face_uvs);
         permute(&mut self.face_textures);
-        bvh.items = (0..order.len() as u32).collect();
+        bvh.items_in_leaf_order();
         // The build reserves room for the worst case; a mesh keeps what it used.
         bvh.nodes.shrink_to_fit();
         self.bvh = bvh;

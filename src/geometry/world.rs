@@ -461,6 +461,9 @@ impl World {
         for node in &mut self.csg {
             node.children.iter_mut().for_each(remap);
         }
+        if (0..).zip(&self.bvh.items).all(|(k, &item)| item == k) {
+            self.bvh.items_in_leaf_order();
+        }
     }
 
     /// The bounds of the photon targets (infinite ones left out: nothing to aim at).
@@ -802,7 +805,7 @@ impl World {
     /// primitive's): where the camera starts, as POV-Ray's interior list does.
     pub fn containing(&self, p: DVec3) -> impl Iterator<Item = u32> + '_ {
         let mut materials = Vec::new();
-        for &item in self.bvh.items.iter().chain(&self.unbounded) {
+        for item in self.bvh.item_list().chain(self.unbounded.iter().copied()) {
             match decode(item) {
                 Ref::Instance(k) => materials.extend(self.instances[k].containing(p)),
                 _ if self.inside(item, p) => materials.extend(self.first_material(item)),
@@ -825,8 +828,12 @@ impl World {
 
     /// The first material of the first top-level item.
     fn top_material(&self) -> Option<u32> {
-        let first = self.bvh.items.first().or(self.unbounded.first())?;
-        self.first_material(*first)
+        let first = self
+            .bvh
+            .item_list()
+            .next()
+            .or(self.unbounded.first().copied())?;
+        self.first_material(first)
     }
 
     /// Whether any top-level item's solid holds `p`.
@@ -1159,6 +1166,40 @@ mod tests {
         world
             .intersect(&Ray::new(origin, dir), f64::INFINITY, 0)
             .map(|h| h.t)
+    }
+
+    /// A world of primitives drops its tree's item list (the primitives are in leaf
+    /// order); each sphere, declared in a scattered order, is still the one a ray aimed at
+    /// it meets, and the item list still names every primitive once.
+    #[test]
+    fn primitives_in_leaf_order_name_themselves() {
+        let mut b = WorldBuilder::default();
+        for i in 0..200 {
+            let x = f64::from((i * 37) % 200) * 3.0;
+            let item = sphere_at(&mut b, x, 1.0);
+            b.add_top(item);
+        }
+        let world = b.build();
+        assert!(world.bvh.items.is_empty());
+        let mut listed: Vec<u32> = world.bvh.item_list().collect();
+        listed.sort_unstable();
+        assert_eq!(listed, (0..200).collect::<Vec<u32>>());
+        for i in 0..200 {
+            let x = f64::from(i) * 3.0;
+            let hit = world
+                .intersect(
+                    &Ray::new(DVec3::new(x, 0.0, -5.0), DVec3::Z),
+                    f64::INFINITY,
+                    0,
+                )
+                .expect("the sphere in front");
+            assert_eq!(hit.t, 4.0);
+            let ShapeKind::Sphere { center, .. } = world.primitives[hit.primitive as usize].shape
+            else {
+                panic!("not a sphere");
+            };
+            assert_eq!(center.x, x);
+        }
     }
 
     #[test]

@@ -72,8 +72,15 @@ struct Binary {
 pub struct Bvh {
     /// Nodes of four children, depth first; the root is node 0.
     pub nodes: Vec<Node>,
-    /// Item indices in leaf order.
+    /// Item indices in leaf order; empty once the owner has put its items in that order
+    /// ([`Bvh::items_in_leaf_order`]), when a leaf's positions are its items.
     pub items: Vec<u32>,
+    /// The items are their positions in leaf order: a ray's visit to a leaf names its
+    /// items without reading the list, a load that missed the cache for most leaves of a
+    /// large scene.
+    positions_are_items: bool,
+    /// The number of positions in leaf order (items with a place in some leaf).
+    positions: usize,
     /// The deepest leaf's depth in nodes, which sizes the traversal's stack.
     depth: usize,
 }
@@ -133,6 +140,29 @@ struct BuildItem {
 }
 
 impl Bvh {
+    /// For owners that have stored their items in the tree's leaf order (item `k` at
+    /// position `k`): drops the list, which then says nothing the positions do not.
+    pub fn items_in_leaf_order(&mut self) {
+        debug_assert!(self.items.iter().enumerate().all(|(k, &i)| k == i as usize));
+        self.positions_are_items = true;
+        self.items = Vec::new();
+    }
+
+    /// The item at position `k` in leaf order.
+    #[inline(always)]
+    fn item(&self, k: usize) -> u32 {
+        if self.positions_are_items {
+            k as u32
+        } else {
+            self.items[k]
+        }
+    }
+
+    /// Every item, in leaf order.
+    pub fn item_list(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..self.positions).map(|k| self.item(k))
+    }
+
     /// Builds over items given by their bounds (finite, non-empty). Large subtrees are built
     /// in parallel; the tree is the same as a sequential build's, node for node.
     pub fn build(bounds: &[Aabb]) -> Bvh {

@@ -110,7 +110,9 @@ pub(super) fn collapse(tree: Binary) -> Bvh {
     );
     Bvh {
         nodes,
+        positions: tree.items.len(),
         items: tree.items,
+        positions_are_items: false,
         depth,
     }
 }
@@ -333,8 +335,8 @@ impl Bvh {
         loop {
             if count > 0 {
                 let start = child as usize;
-                for &item in &self.items[start..start + usize::from(count)] {
-                    match visit(item, t_max) {
+                for k in start..start + usize::from(count) {
+                    match visit(self.item(k), t_max) {
                         Some(t) if t != t_max => {
                             t_max = t;
                             reach = f32_up(t_max);
@@ -403,10 +405,7 @@ impl Bvh {
                 if count == 0 {
                     stack[top] = child;
                     top += 1;
-                } else if self.items[child as usize..][..count]
-                    .iter()
-                    .any(|&item| test(item))
-                {
+                } else if (child as usize..child as usize + count).any(|k| test(self.item(k))) {
                     return true;
                 }
             }
@@ -528,8 +527,14 @@ mod tests {
             let diagonal = DVec3::from_array(std::array::from_fn(|a| {
                 if octant >> a & 1 == 1 { -1.0 } else { 1.0 }
             }));
-            let along: Vec<f64> = lanes[..3].iter().map(|&l| centres[l].dot(diagonal)).collect();
-            assert!(along.windows(2).all(|w| w[0] <= w[1]), "octant {octant}: {along:?}");
+            let along: Vec<f64> = lanes[..3]
+                .iter()
+                .map(|&l| centres[l].dot(diagonal))
+                .collect();
+            assert!(
+                along.windows(2).all(|w| w[0] <= w[1]),
+                "octant {octant}: {along:?}"
+            );
         }
     }
 
