@@ -254,12 +254,42 @@ pub fn permute(mut i: u32, len: u32, seed: u32) -> u32 {
             break;
         }
     }
-    ((i as u64 + p as u64) % len as u64) as u32
+    add_mod(i, p, len)
+}
+
+/// (i + p) mod len for i < len, with p reduced first: a 32-bit division instead of the
+/// 64-bit one the sum would need.
+#[inline]
+fn add_mod(i: u32, p: u32, len: u32) -> u32 {
+    let s = u64::from(i) + u64::from(p % len);
+    let len = u64::from(len);
+    (if s >= len { s - len } else { s }) as u32
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The reduction equals the sum's remainder, for lengths up to u32::MAX.
+    #[test]
+    fn add_mod_is_the_remainder_of_the_sum() {
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = move || {
+            state = mix(state);
+            state
+        };
+        for k in 0..100_000 {
+            let len = match k % 3 {
+                0 => (next() % 64) as u32 + 1,
+                1 => u32::MAX - (next() % 4) as u32,
+                _ => (next() as u32).max(1),
+            };
+            let i = (next() % u64::from(len)) as u32;
+            let p = next() as u32;
+            let sum = ((u64::from(i) + u64::from(p)) % u64::from(len)) as u32;
+            assert_eq!(add_mod(i, p, len), sum, "{i} + {p} mod {len}");
+        }
+    }
 
     #[test]
     fn subsamples_are_stratified_together_and_pure() {

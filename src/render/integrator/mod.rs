@@ -138,7 +138,8 @@ struct Shading<'s> {
     fade_through: DVec3,
     /// Where shadow rays start: just off the surface, on the ray's side.
     shadow_origin: DVec3,
-    path: Path,
+    /// The path so far, borrowed: a copy would move its interior stack with every shading.
+    path: &'s Path,
 }
 
 impl Shading<'_> {
@@ -327,7 +328,7 @@ impl<'a> Integrator<'a> {
         };
         let hit = self.scene.world.intersect(ray, reach, path.skip);
         let seen = match &hit {
-            Some(hit) => self.shade(&self.shading(ray, hit, path), sampler, counts),
+            Some(hit) => self.shade(&self.shading(ray, hit, &path), sampler, counts),
             None => self.sky(ray.direction),
         };
         let media = !self.scene.media.is_empty()
@@ -359,7 +360,10 @@ impl<'a> Integrator<'a> {
         fog_effect(&self.scene.fogs, &segment).apply(seen)
     }
 
-    fn shading(&self, ray: &Ray, hit: &Hit, path: Path) -> Shading<'a> {
+    fn shading<'p>(&self, ray: &Ray, hit: &Hit, path: &'p Path) -> Shading<'p>
+    where
+        'a: 'p,
+    {
         let surface = self.scene.world.surface(ray, hit);
         let d = ray.direction.normalize();
         // The ray meets the surface from behind, and whether it leaves the interior. As in

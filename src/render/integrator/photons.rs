@@ -319,7 +319,8 @@ impl Integrator<'_> {
                 self.through_media(&segment, from, &mut travel, &mut out.volume);
             }
             travel.length += step;
-            let s = self.shading(&ray, &hit, path);
+            let at = path;
+            let s = self.shading(&ray, &hit, &at);
             if s.material.photons.pass_through {
                 path.interiors = super::crossing(&s).2;
                 ray = Ray::new(offset_point(s.surface.point, s.surface.normal, s.d), s.d);
