@@ -862,30 +862,25 @@ impl World {
             t_best
         };
         let mut nearest: Option<u32> = None;
-        self.bvh.traverse(
-            ray,
-            t_bounded,
-            #[inline(always)]
-            |i, t_cur| {
-                // Once a bounded item is met, one at the very same distance is a tie, settled
-                // by the scene's order rather than by the order the tree visits them.
-                let reach = if nearest.is_some() {
-                    t_cur.next_up()
-                } else {
-                    t_cur
-                };
-                match self.item_hit(i, ray, reach, skip) {
-                    Some(hit)
-                        if hit.t < t_cur || nearest.is_some_and(|n| self.declared_before(i, n)) =>
-                    {
-                        best = Some(hit);
-                        nearest = Some(i);
-                        Some(hit.t)
-                    }
-                    _ => Some(t_cur),
+        self.bvh.traverse(ray, t_bounded, |i, t_cur| {
+            // Once a bounded item is met, one at the very same distance is a tie, settled
+            // by the scene's order rather than by the order the tree visits them.
+            let reach = if nearest.is_some() {
+                t_cur.next_up()
+            } else {
+                t_cur
+            };
+            match self.item_hit(i, ray, reach, skip) {
+                Some(hit)
+                    if hit.t < t_cur || nearest.is_some_and(|n| self.declared_before(i, n)) =>
+                {
+                    best = Some(hit);
+                    nearest = Some(i);
+                    Some(hit.t)
                 }
-            },
-        );
+                _ => Some(t_cur),
+            }
+        });
         best
     }
 
@@ -909,18 +904,13 @@ impl World {
             return true;
         }
         let mut hit = false;
-        self.bvh.traverse(
-            ray,
-            t_max,
-            #[inline(always)]
-            |i, t_cur| {
-                if self.item_blocks(i, ray, t_cur) {
-                    hit = true;
-                    return None;
-                }
-                Some(t_cur)
-            },
-        );
+        self.bvh.traverse(ray, t_max, |i, t_cur| {
+            if self.item_blocks(i, ray, t_cur) {
+                hit = true;
+                return None;
+            }
+            Some(t_cur)
+        });
         hit
     }
 
