@@ -108,9 +108,14 @@ struct RenderArgs {
     /// pixel's samples together test every point of POV-Ray's light grid.
     #[arg(long, default_value = "cover")]
     light_samples: LightSamples,
-    /// Spend the samples where a pilot pass finds noise (same average per pixel).
-    #[arg(long)]
+    /// Spend the samples where a pilot pass finds noise (same average per pixel); the
+    /// default from 2 samples per pixel on, without --motion-blur.
+    #[arg(long, conflicts_with = "uniform")]
     adaptive: bool,
+    /// The same samples for every pixel (the default at 1 sample per pixel or with
+    /// --motion-blur).
+    #[arg(long)]
+    uniform: bool,
     /// Leave out features penumbra does not support (with a warning) instead of stopping.
     #[arg(long)]
     skip_unsupported: bool,
@@ -355,7 +360,8 @@ struct ConvergeArgs {
     /// Shadow rays per area light at each shading point, or `cover` (as for render).
     #[arg(long, default_value = "cover")]
     light_samples: LightSamples,
-    /// Per-pixel adaptive sample counts (as for render).
+    /// Per-pixel adaptive sample counts (render's default from 2 spp on; off here unless
+    /// given, so that both can be measured).
     #[arg(long)]
     adaptive: bool,
     /// No progress lines.
@@ -733,9 +739,12 @@ impl RenderArgs {
                 settings.animation.subset_end = Some(povray_args::Bound::Pixel(n));
             }
         }
-        let mut job = povray_args::job::job(&settings)?;
-        job.sampling.adaptive = self.adaptive;
-        Ok(job)
+        settings.adaptive = match (self.adaptive, self.uniform) {
+            (true, _) => Some(true),
+            (_, true) => Some(false),
+            _ => None,
+        };
+        povray_args::job::job(&settings)
     }
 }
 

@@ -144,7 +144,8 @@ fn frames_rebuild_the_scene_only_when_it_changes() {
 }
 
 /// `--motion-blur N` splits a frame's samples over N times of its shutter: a scene that does
-/// not move renders exactly as without it, and one that moves does not.
+/// not move renders exactly as without it (sampled uniformly, as motion blur is), and one
+/// that moves does not.
 #[test]
 fn motion_blur_spreads_the_samples_over_the_shutter() {
     for (name, same) in [("checker.pov", true), ("clock_animation.pov", false)] {
@@ -159,6 +160,7 @@ fn motion_blur_spreads_the_samples_over_the_shutter() {
                 "8",
                 "--motion-blur",
                 blur,
+                "--uniform",
             ]
             .map(str::to_string)
             .to_vec();

@@ -41,15 +41,14 @@ fn shard_range(k: u32, n: u32) -> String {
     format!("{}..{}", k * 16 / n, (k + 1) * 16 / n)
 }
 
-fn shards(dir: &Path, n: u32, threads: &str) -> Vec<PathBuf> {
+fn shards(dir: &Path, n: u32, threads: &str, sampling: &[&str]) -> Vec<PathBuf> {
     (0..n)
         .map(|k| {
             let path = dir.join(format!("n{n}-{k}.pshard"));
             let range = shard_range(k, n);
-            ok(render(
-                &["--sample-range", &range, "--threads", threads],
-                &path,
-            ));
+            let mut args = vec!["--sample-range", &range, "--threads", threads];
+            args.extend_from_slice(sampling);
+            ok(render(&args, &path));
             path
         })
         .collect()
@@ -69,12 +68,13 @@ fn merge(shards: &[PathBuf], out: &Path) -> Output {
 fn one_three_and_seven_shards_merge_into_the_single_render_byte_for_byte() {
     let temp = TempDir::new("farm-merge").expect("temp dir");
     let dir = temp.path();
-    for ext in ["png", "exr"] {
+    // Adaptive sampling (the default at 16 spp) into PNG, uniform into EXR.
+    for (ext, sampling) in [("png", &[][..]), ("exr", &["--uniform"][..])] {
         let single = dir.join(format!("single.{ext}"));
-        ok(render(&[], &single));
+        ok(render(sampling, &single));
         let want = std::fs::read(&single).expect("written");
         for n in [1, 3, 7] {
-            let mut parts = shards(dir, n, if n == 3 { "1" } else { "2" });
+            let mut parts = shards(dir, n, if n == 3 { "1" } else { "2" }, sampling);
             // Any order.
             parts.reverse();
             let out = dir.join(format!("merged{n}.{ext}"));
@@ -88,11 +88,36 @@ fn one_three_and_seven_shards_merge_into_the_single_render_byte_for_byte() {
     }
 }
 
+/// `render` samples adaptively from 2 samples per pixel on and uniformly at 1, unless told.
+#[test]
+fn the_default_sampling_is_adaptive_from_two_samples_per_pixel() {
+    let temp = TempDir::new("farm-default").expect("temp dir");
+    let dir = temp.path();
+    let bytes = |spp: &str, sampling: &[&str]| {
+        let out = dir.join("x.exr");
+        ok(penumbra()
+            .args(["render", &scene("soft_shadow.pov"), "-q", "--width", "48"])
+            .args(["--height", "36", "--spp", spp, "--seed", "7"])
+            .args(sampling)
+            .arg("-o")
+            .arg(&out)
+            .output()
+            .expect("runs"));
+        std::fs::read(&out).expect("written")
+    };
+    let default = bytes("16", &[]);
+    assert_eq!(default, bytes("16", &["--adaptive"]));
+    assert_ne!(default, bytes("16", &["--uniform"]));
+    let one = bytes("1", &[]);
+    assert_eq!(one, bytes("1", &["--uniform"]));
+    assert_ne!(one, bytes("1", &["--adaptive"]));
+}
+
 #[test]
 fn shards_that_do_not_belong_together_are_refused_with_the_reason() {
     let temp = TempDir::new("farm-refuse").expect("temp dir");
     let dir = temp.path();
-    let parts = shards(dir, 3, "2");
+    let parts = shards(dir, 3, "2", &[]);
     let out = dir.join("out.png");
     let refused = |shards: &[PathBuf], reason: &str| {
         let o = merge(shards, &out);
@@ -251,14 +276,18 @@ fn interrupt(mut command: Command, delay: Duration, signal: &str) -> (Output, Du
 fn an_interrupted_render_resumes_to_the_same_bytes() {
     let temp = TempDir::new("farm-resume").expect("temp dir");
     let dir = temp.path();
-    let whole = dir.join("whole.png");
-    let started = Instant::now();
-    ok(long_render(&whole, &[]).output().expect("runs"));
-    let full_time = started.elapsed().as_secs_f64();
-    for (signal, name) in [("-INT", "int.png"), ("-TERM", "term.png")] {
+    // Adaptive (the default at 64 spp), then uniform.
+    for (signal, name, sampling) in [
+        ("-INT", "int.png", &[][..]),
+        ("-TERM", "term.png", &["--uniform"][..]),
+    ] {
+        let whole = dir.join(format!("whole-{name}"));
+        let started = Instant::now();
+        ok(long_render(&whole, sampling).output().expect("runs"));
+        let full_time = started.elapsed().as_secs_f64();
         let out = dir.join(name);
         let delay = arbitrary_delay(0.1, (0.6 * full_time).max(0.2));
-        let (o, stop) = interrupt(long_render(&out, &[]), delay, signal);
+        let (o, stop) = interrupt(long_render(&out, sampling), delay, signal);
         let err = String::from_utf8_lossy(&o.stderr).to_string();
         assert_eq!(
             o.status.code(),
@@ -270,11 +299,12 @@ fn an_interrupted_render_resumes_to_the_same_bytes() {
         assert!(!out.exists(), "a half-rendered image was written");
         let checkpoint = dir.join(format!("{name}.checkpoint"));
         assert!(checkpoint.exists());
-        ok(long_render(&out, &["--resume"]).output().expect("runs"));
+        let resume = [sampling, &["--resume"]].concat();
+        ok(long_render(&out, &resume).output().expect("runs"));
         assert_eq!(
             std::fs::read(&out).expect("resumed"),
             std::fs::read(&whole).expect("whole"),
-            "{signal} after {delay:?}"
+            "{signal} after {delay:?}, {sampling:?}"
         );
         assert!(!checkpoint.exists(), "the checkpoint was left behind");
     }

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use super::{Antialias, Bound, PovSettings};
 use crate::lang::AnimationClock;
-use crate::render::PixelWindow;
+use crate::render::{PixelWindow, adaptive_by_default};
 
 /// Samples per pixel and whether a pilot pass spreads them where the noise is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -24,7 +24,7 @@ pub fn sampling_for(aa: &Antialias) -> Sampling {
     if !aa.on {
         return Sampling {
             spp: 16,
-            adaptive: false,
+            adaptive: adaptive_by_default(16),
         };
     }
     let depth = aa.depth.clamp(1, 6);
@@ -91,13 +91,18 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
         .ok_or("no scene: give a .pov file or +Iscene.pov")?;
     let window = pixel_window(settings)?;
     let frames = frames(settings, &scene)?;
-    let sampling = match settings.spp {
+    let mut sampling = match settings.spp {
         Some(spp) => Sampling {
             spp,
-            adaptive: false,
+            adaptive: adaptive_by_default(spp),
         },
         None => sampling_for(&settings.antialias),
     };
+    // Each time of a motion-blurred frame is its own render, whose pilot would spread its
+    // samples its own way: the times' shares of each pixel would differ.
+    sampling.adaptive = settings
+        .adaptive
+        .unwrap_or(sampling.adaptive && settings.motion_blur <= 1);
     Ok(Job {
         scene,
         width: settings.width,

@@ -113,6 +113,8 @@ pub struct PovSettings {
     pub continue_trace: bool,
     /// `--motion-blur N`.
     pub motion_blur: u32,
+    /// `--adaptive` (true) or `--uniform` (false); none: `adaptive_by_default`.
+    pub adaptive: Option<bool>,
     /// One line per option accepted that does not apply.
     pub notes: Vec<String>,
 }
@@ -142,6 +144,7 @@ impl Default for PovSettings {
             allow_write: None,
             continue_trace: false,
             motion_blur: 1,
+            adaptive: None,
             notes: Vec::new(),
         }
     }
@@ -194,7 +197,11 @@ pub fn parse_args(args: &[String], files: &dyn SourceFiles) -> Result<PovSetting
                 None => (name, None),
             };
             let option = find_long(name).ok_or_else(|| unknown(arg, None))?;
-            let value = if matches!(option.setting, Setting::Crop | Setting::Quiet) {
+            let flag = matches!(
+                option.setting,
+                Setting::Crop | Setting::Quiet | Setting::Adaptive | Setting::Uniform
+            );
+            let value = if flag {
                 inline.unwrap_or_default()
             } else if let Some(v) = inline {
                 v
@@ -441,6 +448,8 @@ impl Reader<'_> {
             Setting::Quiet => s.quiet = true,
             Setting::AllowWrite => s.allow_write = Some(PathBuf::from(value.trim())),
             Setting::MotionBlur => s.motion_blur = whole(value, 1..=1024)?,
+            Setting::Adaptive => s.adaptive = Some(true),
+            Setting::Uniform => s.adaptive = Some(false),
             _ => self.apply_more(option, switch_on, value)?,
         }
         Ok(())

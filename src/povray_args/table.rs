@@ -54,6 +54,9 @@ pub enum Setting {
     AllowWrite,
     /// penumbra's own: `--motion-blur N`.
     MotionBlur,
+    /// penumbra's own: `--adaptive`, `--uniform`.
+    Adaptive,
+    Uniform,
     /// Accepted with a one-line note: does not apply to penumbra.
     NotApplicable,
 }
@@ -158,7 +161,7 @@ pub const OPTIONS: &[PovOption] = &[
         Antialias,
         [
             "adaptive anti-aliasing on (+A) or off (-A); `+An` also sets the threshold",
-            "sets the samples per pixel (see the table below); adaptive sampling when on",
+            "sets the samples per pixel (see the table below), sampled adaptively",
         ],
     ),
     opt(
@@ -795,6 +798,16 @@ pub const OPTIONS: &[PovOption] = &[
         "motion-blur",
         MotionBlur,
         "`--motion-blur N`: each frame of an animation averages N times spread over its shutter (the frame's clock to the next frame's), parsed at each; POV-Ray 3.7 has no motion blur",
+    ),
+    own(
+        "adaptive",
+        Adaptive,
+        "`--adaptive`: a pilot pass spreads the samples where the image changes (the default from 2 samples per pixel on, without motion blur)",
+    ),
+    own(
+        "uniform",
+        Uniform,
+        "`--uniform`: every pixel takes the same samples",
     ),
 ];
 

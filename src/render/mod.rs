@@ -34,6 +34,15 @@ use dimensions::Purpose;
 
 const TILE: usize = 16;
 
+/// Whether a render of `spp` samples per pixel spreads them adaptively unless told
+/// otherwise. Measured at 640x480 on the twelve scenes of docs/convergence.md (2 seeds, one
+/// thread; squared error times time, uniform over adaptive): from 2 spp on, adaptive is the
+/// more efficient on every scene (1.06x to 44x); at 1 spp it is the less efficient on 8 of
+/// the 12 (0.64x to 0.89x), its pilot then being most of the budget.
+pub fn adaptive_by_default(spp: u32) -> bool {
+    spp >= 2
+}
+
 #[derive(Clone, Debug)]
 pub struct RenderOptions {
     pub width: usize,
@@ -196,7 +205,11 @@ pub fn render_from(
     } else if options.adaptive {
         adaptive_passes(
             options,
-            options.samples_per_pixel.max(1),
+            Share {
+                range: range.clone(),
+                spp: options.samples_per_pixel.max(1),
+            },
+            checkpoint,
             &|plan, p| run(plan, p),
             progress,
         )
@@ -237,18 +250,18 @@ fn sample_range(options: &RenderOptions) -> Result<Range<u32>, RenderError> {
             range.start, range.end
         )));
     }
-    if (options.adaptive || options.target_error.is_some()) && options.sample_range.is_some() {
+    if options.target_error.is_some() && options.sample_range.is_some() {
         return Err(RenderError(
-            "adaptive sampling and --target-error cannot be split into sample ranges".into(),
+            "--target-error cannot be split into sample ranges".into(),
         ));
     }
     Ok(range)
 }
 
 fn check_checkpoint(options: &RenderOptions, done: &Film) -> Result<(), RenderError> {
-    if options.adaptive || options.target_error.is_some() {
+    if options.target_error.is_some() {
         return Err(RenderError(
-            "adaptive and target-error renders cannot resume from a checkpoint".into(),
+            "target-error renders cannot resume from a checkpoint".into(),
         ));
     }
     if (done.width, done.height) != (options.width, options.height) {
@@ -395,12 +408,93 @@ impl PixelWork {
 ///   pilot sample stays;
 /// - all share the time `spp` samples each would take (`spp - 1` where the pilot stays) as
 ///   [`allocate`] says.
+///
+/// A shard (`share`) takes the same fraction of every pixel's count, and the shard that
+/// starts at sample 0 holds the pilot samples that stay; a resumed render takes each
+/// pixel's samples after those its checkpoint holds. Every render of a part repeats the
+/// pilot, which is deterministic, so the parts sum to the whole render exactly.
 fn adaptive_passes(
     options: &RenderOptions,
-    spp: u32,
+    share: Share,
+    checkpoint: Option<&Film>,
     run: &Pass,
     progress: &dyn Progress,
 ) -> (Film, RayCounts, u64) {
+    let Pilot {
+        film: mut pilot,
+        mut rays,
+        pixels,
+    } = pilot_pass(options, run);
+    let w = pilot.width;
+    let shown = |i: usize| {
+        let win = options.window.as_ref();
+        win.is_none_or(|win| win.contains(i % w, i / w))
+    };
+    // The pilot samples that stay are this render's (or its checkpoint's) when it starts at 0.
+    let first_shard = share.range.start == 0;
+    let holds_pilot = |i: usize| first_shard && pixels[i].one_ray && shown(i);
+    let counts = allocate(&pixels, share.spp);
+    let resume_at = checkpoint.map_or_else(Vec::new, |c| {
+        let held = |i: usize| c.pixels[i].count.saturating_sub(u32::from(holds_pilot(i)));
+        (0..counts.len())
+            .map(|i| share.of(counts[i]).start + held(i))
+            .collect()
+    });
+    let before = checkpoint.map_or(0, Film::samples);
+    let mut film = match checkpoint {
+        Some(done) => done.clone(),
+        None => {
+            progress.pass(&pilot);
+            keep_only(&mut pilot, holds_pilot);
+            pilot
+        }
+    };
+    let passes = if options.passes {
+        doubling(share.range.clone())
+    } else {
+        vec![share.range.clone()]
+    };
+    for range in passes {
+        let plan = SamplePlan::PerPixel {
+            counts: counts.clone(),
+            seed: options.seed,
+            one_ray: pixels.iter().map(|p| p.one_ray).collect(),
+            share: Share { range, ..share },
+            resume_at: resume_at.clone(),
+        };
+        let more = run(&plan, progress);
+        rays.add(&more.rays);
+        film.merge(&more.film);
+        if progress.cancelled() {
+            break;
+        }
+        progress.pass(&film);
+    }
+    let samples = film.samples() - before;
+    (film, rays, samples)
+}
+
+/// Clears the pixels of `film` for which `keep` is false.
+fn keep_only(film: &mut Film, keep: impl Fn(usize) -> bool) {
+    for (i, pixel) in film.pixels.iter_mut().enumerate() {
+        if !keep(i) {
+            *pixel = PixelSum::default();
+        }
+    }
+    let w = film.width;
+    film.non_finite
+        .retain(|&(x, y)| keep(y as usize * w + x as usize));
+}
+
+/// What the adaptive pilot leaves: its film, its rays, and what it decided per pixel.
+struct Pilot {
+    film: Film,
+    rays: RayCounts,
+    pixels: Vec<AdaptivePixel>,
+}
+
+/// The pilot of [`adaptive_passes`] over the whole image and the decisions read from it.
+fn pilot_pass(options: &RenderOptions, run: &Pass) -> Pilot {
     let pilot = SamplePlan::Uniform {
         spp: 1,
         range: 0..1,
@@ -409,12 +503,8 @@ fn adaptive_passes(
         seed: options.seed ^ 0xad47_1be5_5eed_0001,
         fixed_light: Some(PILOT_LIGHT_RAYS),
     };
-    let PassOutput {
-        film: mut pilot,
-        mut rays,
-        work,
-    } = run(&pilot, &());
-    let w = pilot.width;
+    let PassOutput { film, rays, work } = run(&pilot, &());
+    let w = film.width;
     // Shadow rays around the pixel (itself left out) that arrived, and that were stopped.
     let around = |flag: fn(&PixelWork) -> bool| {
         let own: Vec<u32> = work.iter().map(|p| u32::from(flag(p))).collect();
@@ -425,47 +515,39 @@ fn adaptive_passes(
             .collect::<Vec<bool>>()
     };
     let (lit, shadowed) = (around(|p| p.lit), around(|p| p.shadowed));
-    let one_ray: Vec<bool> = lit.iter().zip(&shadowed).map(|(l, s)| !(l & s)).collect();
-    let pixels: Vec<AdaptivePixel> = neighbour_change(&pilot)
+    let pixels = neighbour_change(&film)
         .into_iter()
         .zip(neighbour_cost(&work, w))
-        .zip(&one_ray)
-        .map(|((change, cost), &one_ray)| AdaptivePixel {
+        .zip(lit.iter().zip(&shadowed))
+        .map(|((change, cost), (l, s))| AdaptivePixel {
             change,
             cost,
-            one_ray,
+            one_ray: !(l & s),
         })
         .collect();
-    let plan = SamplePlan::PerPixel {
-        counts: allocate(&pixels, spp),
-        seed: options.seed,
-        one_ray,
+    Pilot { film, rays, pixels }
+}
+
+/// A render's part of each pixel's samples: samples `range` of `spp`, scaled to each
+/// pixel's own count, so that shards whose ranges tile 0..spp tile every pixel's samples.
+#[derive(Clone, Debug)]
+struct Share {
+    range: Range<u32>,
+    spp: u32,
+}
+
+impl Share {
+    /// Every sample of every pixel.
+    const ALL: Share = Share {
+        range: 0..1,
+        spp: 1,
     };
-    let more = run(&plan, progress);
-    rays.add(&more.rays);
-    let shown = |i: usize| {
-        let win = options.window.as_ref();
-        win.is_none_or(|win| win.contains(i % w, i / w))
-    };
-    for (i, (pixel, extra)) in pilot.pixels.iter_mut().zip(&more.film.pixels).enumerate() {
-        if !shown(i) {
-            // The pilot covered the whole image, for the allocation; the window alone shows.
-            *pixel = PixelSum::default();
-        } else if pixels[i].one_ray {
-            pixel.merge(extra);
-        } else {
-            *pixel = *extra;
-        }
+
+    /// This part of `count` samples.
+    fn of(&self, count: u32) -> Range<u32> {
+        let scale = |k: u32| (u64::from(k) * u64::from(count) / u64::from(self.spp)) as u32;
+        scale(self.range.start)..scale(self.range.end)
     }
-    let kept = |&(x, y): &(u32, u32)| {
-        let i = y as usize * w + x as usize;
-        pixels[i].one_ray && shown(i)
-    };
-    pilot.non_finite.retain(kept);
-    pilot.non_finite.extend_from_slice(&more.film.non_finite);
-    pilot.non_finite.sort_unstable_by_key(|&(x, y)| (y, x));
-    let samples = pilot.samples();
-    (pilot, rays, samples)
 }
 
 /// Which samples each pixel takes.
@@ -481,12 +563,16 @@ enum SamplePlan<'a> {
         seed: u64,
         fixed_light: Option<u32>,
     },
-    /// Adaptive sampling: pixel i takes counts[i] samples (all of its own strata; none
-    /// where the count is 0), with one shadow ray per light per sample where one_ray[i].
+    /// Adaptive sampling: pixel i has counts[i] samples (all of its own strata; none
+    /// where the count is 0) and takes those of its `share` from `resume_at[i]` on (a
+    /// checkpoint holds those before; empty: none), with one shadow ray per light per
+    /// sample where one_ray[i].
     PerPixel {
         counts: Vec<u32>,
         seed: u64,
         one_ray: Vec<bool>,
+        share: Share,
+        resume_at: Vec<u32>,
     },
 }
 
@@ -537,13 +623,18 @@ impl SamplePlan<'_> {
                 counts,
                 seed,
                 one_ray,
-                ..
-            } => PixelPlan {
-                spp: counts[i].max(1),
-                range: 0..counts[i],
-                seed: *seed,
-                fixed_light: one_ray[i],
-            },
+                share,
+                resume_at,
+            } => {
+                let part = share.of(counts[i]);
+                let first = part.start.max(resume_at.get(i).copied().unwrap_or(0));
+                PixelPlan {
+                    spp: counts[i].max(1),
+                    range: first.min(part.end)..part.end,
+                    seed: *seed,
+                    fixed_light: one_ray[i],
+                }
+            }
         }
     }
 }
@@ -948,6 +1039,38 @@ fn pass_integrators<'s>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shares_that_tile_the_samples_tile_every_pixels_count() {
+        let mut next = crate::geometry::uniform_stream(11);
+        for _ in 0..2000 {
+            let spp = 1 + (next() * 300.0) as u32;
+            // Cut 0..spp at a few random places.
+            let mut cuts: Vec<u32> = (0..1 + (next() * 5.0) as usize)
+                .map(|_| (next() * f64::from(spp + 1)) as u32)
+                .chain([0, spp])
+                .collect();
+            cuts.sort_unstable();
+            let count = (next() * 5000.0) as u32;
+            let parts: Vec<Range<u32>> = cuts
+                .windows(2)
+                .map(|c| {
+                    Share {
+                        range: c[0]..c[1],
+                        spp,
+                    }
+                    .of(count)
+                })
+                .collect();
+            assert_eq!(parts.first().map(|p| p.start), Some(0));
+            assert_eq!(parts.last().map(|p| p.end), Some(count));
+            assert!(
+                parts.windows(2).all(|p| p[0].end == p[1].start),
+                "{parts:?}"
+            );
+        }
+        assert_eq!(Share::ALL.of(37), 0..37);
+    }
 
     #[test]
     fn window_sums_add_the_square_around_and_stop_at_the_borders() {

@@ -8,7 +8,7 @@
 //! influence on any one pixel is of order 1/pixels (measured in tests/farm.rs and the
 //! note, as the bias test against POV-Ray still passing).
 
-use super::{Film, Pass, Progress, RayCounts, RenderOptions, SamplePlan, neighbour_noise};
+use super::{Film, Pass, Progress, RayCounts, RenderOptions, SamplePlan, Share, neighbour_noise};
 
 /// What `--target-error` asks for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -108,6 +108,8 @@ pub(super) fn render_to_error(
             counts: allocate(&neighbour_noise(&film), budget),
             seed: pass_seed(options.seed, pass),
             one_ray: vec![false; film.pixels.len()],
+            share: Share::ALL,
+            resume_at: Vec::new(),
         };
         let more = run(&plan, progress);
         film.merge(&more.film);
