@@ -657,7 +657,7 @@ impl ShapeKind {
 /// general dispatch (most items in a scene of many objects are spheres).
 #[inline(always)]
 pub fn sphere_first_hit(ray: &Ray, center: DVec3, radius: f64, t_max: f64) -> Option<f64> {
-    sphere_roots(ray, center, radius)
+    sphere_roots_ahead(ray, center, radius, true)
         .as_slice()
         .iter()
         .find(|&&t| t > 0.0 && t < t_max)
@@ -669,6 +669,12 @@ pub fn sphere_first_hit(ray: &Ray, center: DVec3, radius: f64, t_max: f64) -> Op
 /// second root from the product of roots (q = -(b + sign(b) sqrt(disc)), t0 = q/a, t1 = c/q).
 #[inline(always)]
 fn sphere_roots(ray: &Ray, center: DVec3, radius: f64) -> Roots {
+    sphere_roots_ahead(ray, center, radius, false)
+}
+
+/// `sphere_roots`; with `ahead_only`, none where both are <= 0 and found cheaply so.
+#[inline(always)]
+fn sphere_roots_ahead(ray: &Ray, center: DVec3, radius: f64, ahead_only: bool) -> Roots {
     let none = Roots::default();
     let d = ray.direction;
     let oc = ray.origin - center;
@@ -682,6 +688,14 @@ fn sphere_roots(ray: &Ray, center: DVec3, radius: f64) -> Roots {
     // and where it is below zero by far more than its rounding error (a few ulps of
     // a (|oc|^2 + r^2)), the careful form below is negative as well.
     if b * b - a * c < -1e-9 * a * (oc.dot(oc) + radius * radius) {
+        return none;
+    }
+    // A ray that starts on or outside the sphere (c >= 0) and heads away from its centre
+    // (b >= 0) meets it at no t > 0: the roots' product c/a is not negative and their sum
+    // -2b/a not positive. The careful form below finds the same in floating point (its
+    // roots are q/a and c/q with q <= 0), only later: a shadow ray leaving the sphere it
+    // starts on took its division and square root every time.
+    if ahead_only && b.is_sign_positive() && c >= 0.0 {
         return none;
     }
     let perp = oc - d * (b / a);

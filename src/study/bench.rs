@@ -420,11 +420,18 @@ enum RayOrder {
     Random,
 }
 
-/// Directions from the pinhole through the view square [-1.2, 1.2]^2 at distance 3.
-fn ray_directions(rays: usize, order: RayOrder) -> Vec<DVec3> {
+/// Half the width of the camera's view square at distance 3, where the clouds' front face
+/// spans [-1, 1]^2: about a third of the camera rays miss the cloud at the root.
+const VIEW: f64 = 1.2;
+/// A view within the front face: every camera ray meets the cloud, as where objects fill the
+/// image.
+const INTO_CLOUD: f64 = 0.7;
+
+/// Directions from the pinhole through the view square [-view, view]^2 at distance 3.
+fn ray_directions(rays: usize, order: RayOrder, view: f64) -> Vec<DVec3> {
     const TILE: usize = 16;
     let mut rng = Xorshift(0x9E37_79B9_7F4A_7C15);
-    let through = |s: f64, t: f64| DVec3::new(s * 1.2, t * 1.2, 3.0).normalize();
+    let through = |s: f64, t: f64| DVec3::new(s * view, t * view, 3.0).normalize();
     if order == RayOrder::Random {
         return (0..rays)
             .map(|_| through(rng.next() * 2.0 - 1.0, rng.next() * 2.0 - 1.0))
@@ -450,9 +457,13 @@ fn ray_directions(rays: usize, order: RayOrder) -> Vec<DVec3> {
 /// Camera rays from a pinhole in front of the cube, then shadow rays from their hits to a
 /// point light (in the same order), all on the current thread.
 fn trace(world: &World, rays: usize, order: RayOrder) -> RayFigures {
+    trace_view(world, rays, order, VIEW)
+}
+
+fn trace_view(world: &World, rays: usize, order: RayOrder, view: f64) -> RayFigures {
     let eye = DVec3::new(0.0, 0.0, -4.0);
     let light = DVec3::new(3.0, 5.0, -4.0);
-    let dirs = ray_directions(rays, order);
+    let dirs = ray_directions(rays, order, view);
     let start = Instant::now();
     let mut points = Vec::with_capacity(rays);
     for &d in &dirs {
@@ -546,6 +557,18 @@ pub fn sphere_table(counts: &[usize], rays: usize, line: &mut impl FnMut(String)
             seq.0,
             seq.1,
             seq.0 / seq.1
+        ));
+        let (tiles, random) = (
+            trace_view(&world, rays, RayOrder::Tiles, INTO_CLOUD),
+            trace_view(&world, rays, RayOrder::Random, INTO_CLOUD),
+        );
+        line(format!(
+            "          (every camera ray into the cloud, {:.0}% hit: camera {:.0}, shadow {:.0}; random {:.0}, {:.0} per second)",
+            100.0 * random.hit_fraction,
+            tiles.camera_rate,
+            tiles.shadow_rate,
+            random.camera_rate,
+            random.shadow_rate
         ));
     }
     if let (Some(first), Some(last)) = (per_ray.first(), per_ray.last())
