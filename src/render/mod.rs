@@ -37,8 +37,8 @@ const TILE: usize = 16;
 /// Whether a render of `spp` samples per pixel spreads them adaptively unless told
 /// otherwise. Measured at 640x480 on the twelve scenes of docs/convergence.md (2 seeds, one
 /// thread; squared error times time, uniform over adaptive): from 2 spp on, adaptive is the
-/// more efficient on every scene (1.06x to 44x); at 1 spp it is the less efficient on 8 of
-/// the 12 (0.64x to 0.89x), its pilot then being most of the budget.
+/// more efficient on every scene (1.04x to 48x); at 1 spp it is the less efficient on 8 of
+/// the 12 (0.64x to 0.83x), its pilot then being most of the budget.
 pub fn adaptive_by_default(spp: u32) -> bool {
     spp >= 2
 }
@@ -434,6 +434,7 @@ fn adaptive_passes(
     let first_shard = share.range.start == 0;
     let holds_pilot = |i: usize| first_shard && pixels[i].one_ray && shown(i);
     let counts = allocate(&pixels, share.spp);
+    let one_ray: Vec<bool> = pixels.iter().map(|p| p.one_ray).collect();
     let resume_at = checkpoint.map_or_else(Vec::new, |c| {
         let held = |i: usize| c.pixels[i].count.saturating_sub(u32::from(holds_pilot(i)));
         (0..counts.len())
@@ -456,11 +457,11 @@ fn adaptive_passes(
     };
     for range in passes {
         let plan = SamplePlan::PerPixel {
-            counts: counts.clone(),
+            counts: &counts,
             seed: options.seed,
-            one_ray: pixels.iter().map(|p| p.one_ray).collect(),
+            one_ray: &one_ray,
             share: Share { range, ..share },
-            resume_at: resume_at.clone(),
+            resume_at: &resume_at,
         };
         let more = run(&plan, progress);
         rays.add(&more.rays);
@@ -568,11 +569,11 @@ enum SamplePlan<'a> {
     /// checkpoint holds those before; empty: none), with one shadow ray per light per
     /// sample where one_ray[i].
     PerPixel {
-        counts: Vec<u32>,
+        counts: &'a [u32],
         seed: u64,
-        one_ray: Vec<bool>,
+        one_ray: &'a [bool],
         share: Share,
-        resume_at: Vec<u32>,
+        resume_at: &'a [u32],
     },
 }
 

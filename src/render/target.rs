@@ -104,12 +104,14 @@ pub(super) fn render_to_error(
             break;
         }
         let budget = pass_budget(&estimate, goal, taken, pixels).min(cap - taken);
+        let counts = allocate(&neighbour_noise(&film), budget);
+        let one_ray = vec![false; film.pixels.len()];
         let plan = SamplePlan::PerPixel {
-            counts: allocate(&neighbour_noise(&film), budget),
+            counts: &counts,
             seed: pass_seed(options.seed, pass),
-            one_ray: vec![false; film.pixels.len()],
+            one_ray: &one_ray,
             share: Share::ALL,
-            resume_at: Vec::new(),
+            resume_at: &[],
         };
         let more = run(&plan, progress);
         film.merge(&more.film);
