@@ -298,6 +298,20 @@ fn photons_are_the_same_for_any_thread_count_and_any_split() {
     let whole = part(0..8);
     assert_eq!(merged.pixels, whole.pixels);
     assert_eq!(merged.means(), one);
+    // Adaptive: each part shoots the photon passes of its own samples only.
+    let adaptive = |range: std::ops::Range<u32>| {
+        let o = RenderOptions {
+            sample_range: Some(range),
+            adaptive: true,
+            ..options(size, 8, 3, 2)
+        };
+        penumbra::render_film(&loaded.scene, &o, &())
+            .expect("render")
+            .0
+    };
+    let mut merged = adaptive(0..3);
+    merged.merge(&adaptive(3..8));
+    assert_eq!(merged.pixels, adaptive(0..8).pixels);
 }
 
 /// The lens again with a clear slab (no interior, no photons block) between it and the

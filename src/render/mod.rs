@@ -588,11 +588,16 @@ struct PixelPlan {
 }
 
 impl SamplePlan<'_> {
-    /// The sample indices some pixel of the plan takes (a superset).
+    /// The sample indices some pixel of the plan takes (a superset): the photon passes a
+    /// render shoots, so a shard of an adaptive render shoots only its part's.
     fn index_span(&self) -> Range<u32> {
         match self {
             SamplePlan::Uniform { range, .. } => range.clone(),
-            SamplePlan::PerPixel { counts, .. } => 0..counts.iter().copied().max().unwrap_or(0),
+            SamplePlan::PerPixel { counts, .. } => (0..counts.len())
+                .map(|i| self.pixel(i).range)
+                .filter(|r| !r.is_empty())
+                .reduce(|a, b| a.start.min(b.start)..a.end.max(b.end))
+                .unwrap_or(0..0),
         }
     }
 
