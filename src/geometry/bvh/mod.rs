@@ -10,6 +10,7 @@ use rayon::prelude::*;
 
 use super::Aabb;
 
+mod few;
 mod wide;
 pub use wide::Node;
 
@@ -83,6 +84,9 @@ pub struct Bvh {
     positions: usize,
     /// The deepest leaf's depth in nodes, which sizes the traversal's stack.
     depth: usize,
+    /// Per position, its box, in a tree of at most [`few::FEW`] items (else empty): such
+    /// trees are walked as a list.
+    few: Vec<Aabb>,
 }
 
 /// A box in single precision, rounded outward so it holds everything the double-precision
@@ -191,7 +195,11 @@ impl Bvh {
             tree.build_node(&mut items, 0);
         }
         drop(items);
-        wide::collapse(tree)
+        let few = few::boxes(&tree.items, bounds_of);
+        Bvh {
+            few,
+            ..wide::collapse(tree)
+        }
     }
 
     /// Builds the sequential way only (for tests and the benchmark's comparison).

@@ -114,6 +114,7 @@ pub(super) fn collapse(tree: Binary) -> Bvh {
         items: tree.items,
         positions_are_items: false,
         depth,
+        few: Vec::new(),
     }
 }
 
@@ -325,6 +326,9 @@ impl Bvh {
     ) {
         if self.nodes.is_empty() {
             return;
+        }
+        if !self.few.is_empty() {
+            return self.traverse_few(ray, t_max, visit);
         }
         let r = BoxRay::new(ray);
         let mut stack = Stack::<DEEP_STACK>::new();
