@@ -93,12 +93,26 @@ pub fn pattern_value_at(pattern: &Pattern, p: DVec3, normal: DVec3) -> f64 {
     apply_wave(pattern, raw)
 }
 
+/// Below this (2^50) a checker's three cell numbers are exact as integers and their sum
+/// (below 2^52) is exact as a float, so both ways of finding its parity agree.
+const CELLS_IN_INTEGERS: f64 = 1_125_899_906_842_624.0;
+
 /// The entry a list pattern (checker, brick, hexagon) selects at a warped point.
 pub fn list_index(kind: &PatternKind, p: DVec3) -> usize {
     match kind {
         PatternKind::Checker => {
             // POV-Ray nudges by 1e-10 so that faces at integer coordinates fall consistently.
-            let s = (p.x + 1e-10).floor() + (p.y + 1e-10).floor() + (p.z + 1e-10).floor();
+            let q = (p + 1e-10).to_array();
+            if q.iter().all(|v| v.abs() < CELLS_IN_INTEGERS) {
+                // The cells' parity in integers: the library's floor and fmod (the baseline
+                // target has no rounding instruction) were half a checker's pattern cost.
+                let cell = |v: f64| {
+                    let t = v as i64;
+                    t - i64::from(t as f64 > v)
+                };
+                return ((cell(q[0]) + cell(q[1]) + cell(q[2])) & 1) as usize;
+            }
+            let s = q[0].floor() + q[1].floor() + q[2].floor();
             s.rem_euclid(2.0) as usize
         }
         PatternKind::Hexagon => hexagon(p),
@@ -539,6 +553,32 @@ mod tests {
         // [1, 0] wraps back up towards the first voxel: 0.962 -> 0.925.
         let w = grid([2, 1, 1], &[1.0, 0.0], true);
         assert!((at(&w, 0.9625) - 0.925).abs() < 1e-3);
+    }
+
+    /// The checker's integer parity gives the floating-point formula's cell at integers,
+    /// beside them, far out and past the integer range (which takes the formula itself).
+    #[test]
+    fn checker_cells_in_integers_match_the_floor_formula() {
+        let formula = |p: DVec3| {
+            let s = (p.x + 1e-10).floor() + (p.y + 1e-10).floor() + (p.z + 1e-10).floor();
+            s.rem_euclid(2.0) as usize
+        };
+        let mut uniform = crate::geometry::uniform_stream(0x2545_F491_4F6C_DD1Du64);
+        for scale in [1.0, 3.0, 1e6, 1e14, 1.1e15, 1.2e15, 1e18, 1e300] {
+            for _ in 0..2000 {
+                let mut v = || {
+                    let x = (uniform() * 2.0 - 1.0) * scale;
+                    // A third of the coordinates on an integer or just below one.
+                    match (uniform() * 3.0) as u32 {
+                        0 => x.round(),
+                        1 => x.round() - 1e-10,
+                        _ => x,
+                    }
+                };
+                let p = DVec3::new(v(), v(), v());
+                assert_eq!(list_index(&PatternKind::Checker, p), formula(p), "at {p}");
+            }
+        }
     }
 
     fn value(kind: PatternKind, p: DVec3) -> f64 {

@@ -488,6 +488,11 @@ impl<'a> Integrator<'a> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
+        // An opaque surface without reflection has no branch: the commonest surface skips
+        // the refraction and Fresnel terms that would show it (7% of checker's instructions).
+        if top.through == DVec3::ZERO && top.finish.reflection.is_zero() {
+            return colour;
+        }
         let b = branches(s, top);
         // By magnitude: POV-Ray takes `transmit -1` literally, subtracting what lies behind
         // (textures/pigments/transmitfx.pov).
