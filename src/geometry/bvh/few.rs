@@ -15,37 +15,64 @@ pub(super) const FEW: usize = 8;
 /// (pbrt's bound) is never nearer than the exact one.
 const SLACK: f64 = 1.0 + 2.0 * (3.0 * f64::EPSILON / 2.0) / (1.0 - 3.0 * f64::EPSILON / 2.0);
 
+/// A box as the list tests it: per axis, its minimum and maximum.
+pub(super) type ListBox = [[f64; 2]; 3];
+
 /// The boxes of the positions in leaf order, for a tree of at most [`FEW`] items (else
 /// none). They are the nodes' boxes (single precision, rounded outward) in double
 /// precision, so the list meets every box the tree's walk meets.
-pub(super) fn boxes(items: &[u32], bounds_of: impl Fn(usize) -> Aabb) -> Vec<Aabb> {
+pub(super) fn boxes(items: &[u32], bounds_of: impl Fn(usize) -> Aabb) -> Vec<ListBox> {
     if items.len() > FEW {
         return Vec::new();
     }
     items
         .iter()
-        .map(|&i| NodeBox::enclosing(&bounds_of(i as usize)).aabb())
+        .map(|&i| {
+            let b = NodeBox::enclosing(&bounds_of(i as usize)).aabb();
+            [0, 1, 2].map(|axis| [b.min[axis], b.max[axis]])
+        })
         .collect()
 }
 
-/// Whether the ray (with `inv` its direction's reciprocals) meets the box within
-/// [0, t_max]. A NaN (0 x infinity, a ray in a slab's plane) fails the comparisons and
-/// leaves the interval as it was, which keeps the test conservative.
-#[inline(always)]
-fn meets(b: &Aabb, ray: &Ray, inv: [f64; 3], t_max: f64) -> bool {
-    let (mut t0, mut t1) = (0.0, t_max);
-    for (axis, &inv) in inv.iter().enumerate() {
-        let a = (b.min[axis] - ray.origin[axis]) * inv;
-        let c = (b.max[axis] - ray.origin[axis]) * inv;
-        let (near, far) = if inv < 0.0 { (c, a) } else { (a, c) };
-        if near > t0 {
-            t0 = near;
-        }
-        if far < t1 {
-            t1 = far;
+/// A ray as the list's box tests need it.
+struct ListRay {
+    origin: [f64; 3],
+    inv: [f64; 3],
+    /// Per axis: which bound holds the near plane (1, the maxima, when the ray runs
+    /// toward -axis).
+    near: [usize; 3],
+}
+
+impl ListRay {
+    #[inline(always)]
+    fn new(ray: &Ray) -> ListRay {
+        let inv = ray.direction.to_array().map(|d| 1.0 / d);
+        ListRay {
+            origin: ray.origin.to_array(),
+            inv,
+            near: inv.map(|i| usize::from(i < 0.0)),
         }
     }
-    t0 <= t1 * SLACK
+
+    /// Whether the ray meets the box within [0, t_max]. A NaN (0 x infinity, a ray in a
+    /// slab's plane) fails the comparisons and leaves the interval as it was, which keeps
+    /// the test conservative.
+    #[inline(always)]
+    fn meets(&self, b: &ListBox, t_max: f64) -> bool {
+        let (mut t0, mut t1) = (0.0, t_max);
+        for (axis, bounds) in b.iter().enumerate() {
+            let n = self.near[axis];
+            let near = (bounds[n] - self.origin[axis]) * self.inv[axis];
+            let far = (bounds[1 - n] - self.origin[axis]) * self.inv[axis];
+            if near > t0 {
+                t0 = near;
+            }
+            if far < t1 {
+                t1 = far;
+            }
+        }
+        t0 <= t1 * SLACK
+    }
 }
 
 impl Bvh {
@@ -58,9 +85,9 @@ impl Bvh {
         mut t_max: f64,
         mut visit: impl FnMut(u32, f64) -> Option<f64>,
     ) {
-        let inv = ray.direction.to_array().map(|d| 1.0 / d);
+        let r = ListRay::new(ray);
         for (k, b) in self.few.iter().enumerate() {
-            if meets(b, ray, inv, t_max) {
+            if r.meets(b, t_max) {
                 match visit(self.item(k), t_max) {
                     Some(t) => t_max = t,
                     None => return,

@@ -86,7 +86,7 @@ pub struct Bvh {
     depth: usize,
     /// Per position, its box, in a tree of at most [`few::FEW`] items (else empty): such
     /// trees are walked as a list.
-    few: Vec<Aabb>,
+    few: Vec<few::ListBox>,
 }
 
 /// A box in single precision, rounded outward so it holds everything the double-precision
