@@ -196,12 +196,12 @@ pub fn render_from(
         ),
         None => None,
     };
-    let run = |plan: &SamplePlan, progress: &dyn Progress| match &pool {
-        Some(pool) => pool.install(|| render_pass(scene, options, plan, progress)),
-        None => render_pass(scene, options, plan, progress),
+    let run = |plan: &SamplePlan, progress: &dyn Progress, film: Option<Film>| match &pool {
+        Some(pool) => pool.install(|| render_pass(scene, options, plan, progress, film)),
+        None => render_pass(scene, options, plan, progress, film),
     };
     let (film, rays, samples) = if let Some(target) = &options.target_error {
-        target::render_to_error(options, target, &|plan, p| run(plan, p), progress)
+        target::render_to_error(options, target, &run, progress)
     } else if options.adaptive {
         adaptive_passes(
             options,
@@ -210,17 +210,11 @@ pub fn render_from(
                 spp: options.samples_per_pixel.max(1),
             },
             checkpoint,
-            &|plan, p| run(plan, p),
+            &run,
             progress,
         )
     } else {
-        uniform_passes(
-            options,
-            range.clone(),
-            checkpoint,
-            &|plan, p| run(plan, p),
-            progress,
-        )
+        uniform_passes(options, range.clone(), checkpoint, &run, progress)
     };
     let complete = match (&options.target_error, options.adaptive) {
         (None, false) => holds_range(options, &film, range.len() as u32),
@@ -301,8 +295,7 @@ fn uniform_passes(
     } else {
         vec![range.clone()]
     };
-    // Without a checkpoint the first pass's film becomes the render's: merged into an empty
-    // film it would be the same, at the cost of a second film (96 bytes a pixel).
+    // Each pass adds its samples to the film (the checkpoint's, or the first pass's own).
     let mut film = checkpoint.cloned();
     let before = film.as_ref().map_or(0, Film::samples);
     let mut rays = RayCounts::default();
@@ -316,21 +309,11 @@ fn uniform_passes(
             fixed_light: None,
         };
         let PassOutput {
-            film: mut part,
+            film: part,
             rays: pass_rays,
             ..
-        } = run(&plan, progress);
-        let film = match &mut film {
-            Some(f) => {
-                f.merge(&part);
-                f
-            }
-            None => {
-                // As `merge` leaves it.
-                part.non_finite.sort_unstable_by_key(|&(x, y)| (y, x));
-                film.insert(part)
-            }
-        };
+        } = run(&plan, progress, film.take());
+        let film = film.insert(part);
         rays.add(&pass_rays);
         if progress.cancelled() {
             break;
@@ -365,7 +348,9 @@ const PILOT_LIGHT_RAYS: u32 = 4;
 const PENUMBRA_REACH: usize = 3;
 
 /// A render pass, as `render` runs it on its thread pool.
-type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress) -> PassOutput + 'a;
+/// A pass over the image: its plan, and the film it adds its samples to (a new one when
+/// `None`); a pass that adds to the film it continues needs no film of its own.
+type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress, Option<Film>) -> PassOutput + 'a;
 
 /// What one pass over the image leaves.
 struct PassOutput {
@@ -463,9 +448,9 @@ fn adaptive_passes(
             share: Share { range, ..share },
             resume_at: &resume_at,
         };
-        let more = run(&plan, progress);
+        let more = run(&plan, progress, Some(film));
         rays.add(&more.rays);
-        film.merge(&more.film);
+        film = more.film;
         if progress.cancelled() {
             break;
         }
@@ -504,7 +489,7 @@ fn pilot_pass(options: &RenderOptions, run: &Pass) -> Pilot {
         seed: options.seed ^ 0xad47_1be5_5eed_0001,
         fixed_light: Some(PILOT_LIGHT_RAYS),
     };
-    let PassOutput { film, rays, work } = run(&pilot, &());
+    let PassOutput { film, rays, work } = run(&pilot, &(), None);
     let w = film.width;
     // Shadow rays around the pixel (itself left out) that arrived, and that were stopped.
     let around = |flag: fn(&PixelWork) -> bool| {
@@ -651,11 +636,11 @@ impl SamplePlan<'_> {
 /// what is decided from this does not depend on its own samples, which stay in its mean.
 fn neighbour_noise(pilot: &Film) -> Vec<f64> {
     let sigma: Vec<f64> = pilot.pixels.iter().map(sample_deviation).collect();
-    around(pilot.width, pilot.height)
-        .enumerate()
-        .map(|(i, near)| {
-            let others = near.filter(|&j| j != i);
-            others.map(|j| sigma[j]).fold(0.0, f64::max)
+    let (w, h) = (pilot.width, pilot.height);
+    (0..w * h)
+        .map(|i| {
+            let (near, n) = neighbours(w, h, i);
+            near[..n].iter().map(|&j| sigma[j]).fold(0.0, f64::max)
         })
         .collect()
 }
@@ -665,11 +650,12 @@ fn neighbour_noise(pilot: &Film) -> Vec<f64> {
 /// or a texture between them shows, and so does noise; the pixel itself is left out.
 fn neighbour_change(pilot: &Film) -> Vec<f64> {
     let values: Vec<[f64; 3]> = pilot.pixels.iter().map(PixelSum::mean).collect();
-    around(pilot.width, pilot.height)
-        .enumerate()
-        .map(|(i, near)| {
+    let (w, h) = (pilot.width, pilot.height);
+    (0..w * h)
+        .map(|i| {
             let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-            for v in near.filter(|&j| j != i).map(|j| values[j]) {
+            let (near, n) = neighbours(w, h, i);
+            for v in near[..n].iter().map(|&j| values[j]) {
                 for c in 0..3 {
                     lo[c] = lo[c].min(v[c]);
                     hi[c] = hi[c].max(v[c]);
@@ -683,15 +669,12 @@ fn neighbour_change(pilot: &Film) -> Vec<f64> {
 /// The rays a sample costs around each pixel: the mean over its eight neighbours' pilot
 /// samples (at least 1), the pixel itself left out.
 fn neighbour_cost(work: &[PixelWork], w: usize) -> Vec<f64> {
-    around(w, work.len() / w.max(1))
-        .enumerate()
-        .map(|(i, near)| {
-            let (mut rays, mut count) = (0.0, 0.0);
-            for j in near.filter(|&j| j != i) {
-                rays += f64::from(work[j].rays);
-                count += 1.0;
-            }
-            (rays / f64::max(count, 1.0)).max(1.0)
+    let h = work.len() / w.max(1);
+    (0..w * h)
+        .map(|i| {
+            let (near, n) = neighbours(w, h, i);
+            let rays: f64 = near[..n].iter().map(|&j| f64::from(work[j].rays)).sum();
+            (rays / f64::max(n as f64, 1.0)).max(1.0)
         })
         .collect()
 }
@@ -709,15 +692,23 @@ fn window_sums(values: &[u32], w: usize, r: usize) -> Vec<u32> {
         .collect()
 }
 
-/// For each pixel of a w x h image in row-major order, the indices of the pixels of the
-/// 3 x 3 block around it (fewer at the borders), itself included.
-fn around(w: usize, h: usize) -> impl Iterator<Item = impl Iterator<Item = usize>> {
-    (0..w * h).map(move |i| {
-        let (x, y) = (i % w, i / w);
-        let columns = x.saturating_sub(1)..(x + 2).min(w);
-        let rows = y.saturating_sub(1)..(y + 2).min(h);
-        rows.flat_map(move |yy| columns.clone().map(move |xx| yy * w + xx))
-    })
+/// The pixels of the 3 x 3 block around pixel `i` of a w x h image (row-major), itself
+/// left out, and how many there are (fewer at the borders). An array, not an iterator of
+/// iterators: over a 640x480 pilot the nested iterators cost 1,300 instructions a pixel.
+fn neighbours(w: usize, h: usize, i: usize) -> ([usize; 8], usize) {
+    let (x, y) = (i % w, i / w);
+    let mut near = [0; 8];
+    let mut n = 0;
+    for yy in y.saturating_sub(1)..(y + 2).min(h) {
+        for xx in x.saturating_sub(1)..(x + 2).min(w) {
+            let j = yy * w + xx;
+            if j != i {
+                near[n] = j;
+                n += 1;
+            }
+        }
+    }
+    (near, n)
 }
 
 /// The standard deviation of one sample of the pixel, over the three channels (0 with fewer
@@ -812,7 +803,13 @@ fn render_pass(
     options: &RenderOptions,
     plan: &SamplePlan,
     progress: &dyn Progress,
+    film: Option<Film>,
 ) -> PassOutput {
+    let mut out = PassOutput {
+        film: film.unwrap_or_else(|| Film::new(options.width, options.height)),
+        rays: RayCounts::default(),
+        work: vec![PixelWork::default(); options.width * options.height],
+    };
     let shooter = Integrator::new(scene, options);
     let first = scene
         .settings
@@ -826,7 +823,7 @@ fn render_pass(
             Some((surface.or(volume)?, volume.or(surface)?))
         });
     let Some((first_surface, first_volume)) = first else {
-        return render_indices(scene, options, plan, None, progress);
+        return render_indices(scene, options, plan, None, progress, out);
     };
     let span = plan.index_span();
     let batches: Vec<Range<u32>> = span
@@ -834,11 +831,6 @@ fn render_pass(
         .step_by(PHOTON_BATCH as usize)
         .map(|a| a..(a + PHOTON_BATCH).min(span.end))
         .collect();
-    let mut out = PassOutput {
-        film: Film::new(options.width, options.height),
-        rays: RayCounts::default(),
-        work: vec![PixelWork::default(); options.width * options.height],
-    };
     for (i, batch) in batches.iter().enumerate() {
         let maps = photons::PhotonMaps {
             first: batch.start,
@@ -860,12 +852,7 @@ fn render_pass(
             indices: batch.clone(),
             number: (i as u64, batches.len() as u64),
         };
-        let part = render_indices(scene, options, plan, Some(&photons), progress);
-        out.film.merge(&part.film);
-        out.rays.add(&part.rays);
-        for (a, b) in out.work.iter_mut().zip(part.work) {
-            a.merge(b);
-        }
+        out = render_indices(scene, options, plan, Some(&photons), progress, out);
         if progress.cancelled() {
             break;
         }
@@ -888,127 +875,185 @@ fn render_indices(
     plan: &SamplePlan,
     photons: Option<&PhotonBatch>,
     progress: &dyn Progress,
+    mut out: PassOutput,
 ) -> PassOutput {
-    let (w, h) = (options.width, options.height);
     let window = match plan {
         // In adaptive mode the one uniform plan is the pilot.
         SamplePlan::Uniform { .. } if options.adaptive => None,
         _ => options.window.clone(),
     };
-    let inside = |x: usize, y: usize| window.as_ref().is_none_or(|win| win.contains(x, y));
-    let tiles: Vec<(usize, usize)> = (0..h.div_ceil(TILE))
+    let tiles = pass_tiles(options.width, options.height, window.as_ref());
+    let (batch, batches) = photons.map_or((0, 1), |p| p.number);
+    let (integrator, fixed_integrator) = pass_integrators(scene, options, plan, photons);
+    let job = TileJob {
+        scene,
+        options,
+        plan,
+        photons,
+        window,
+        layout: *integrator.layout(),
+        integrators: [integrator, fixed_integrator],
+        progress,
+        done: AtomicU64::new(tiles.len() as u64 * batch),
+        total: tiles.len() as u64 * batches,
+    };
+    // Each tile adds to its own rows of the film and work it is given: no film of the
+    // tiles' own and no copy (at 640x480 their page faults were a seventh of a one-sample
+    // render's time), and a pass that continues a film adds to it in place.
+    let w = options.width;
+    let sums = tile_rows(&mut out.film.pixels, w, &tiles);
+    let works = tile_rows(&mut out.work, w, &tiles);
+    let results: Vec<_> = tiles
+        .par_iter()
+        .zip(sums.into_par_iter().zip(works))
+        .map(|(&corner, rows)| job.tile(corner, rows))
+        .collect();
+    for (counts, non_finite) in results {
+        out.rays.add(&counts);
+        out.film.non_finite.extend(non_finite);
+    }
+    // As `Film::merge` keeps it: the same list whatever the split.
+    out.film.non_finite.sort_unstable_by_key(|&(x, y)| (y, x));
+    out
+}
+
+/// The corners of the tiles of a w x h image that meet the window, row by row.
+fn pass_tiles(w: usize, h: usize, window: Option<&PixelWindow>) -> Vec<(usize, usize)> {
+    (0..h.div_ceil(TILE))
         .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
         .filter(|&(x0, y0)| {
-            window.as_ref().is_none_or(|win| {
+            window.is_none_or(|win| {
                 x0 < win.x.end
                     && win.x.start < x0 + TILE
                     && y0 < win.y.end
                     && win.y.start < y0 + TILE
             })
         })
-        .collect();
-    let (batch, batches) = photons.map_or((0, 1), |p| p.number);
-    let total = tiles.len() as u64 * batches;
-    let done = AtomicU64::new(tiles.len() as u64 * batch);
-    let (integrator, fixed_integrator) = pass_integrators(scene, options, plan, photons);
-    let layout = *integrator.layout();
-    let new_sampler = |spp: u32| {
-        if options.stratified {
+        .collect()
+}
+
+/// What every tile of a pass shares.
+struct TileJob<'a> {
+    scene: &'a PreparedScene,
+    options: &'a RenderOptions,
+    plan: &'a SamplePlan<'a>,
+    photons: Option<&'a PhotonBatch<'a>>,
+    window: Option<PixelWindow>,
+    layout: dimensions::DimensionLayout,
+    /// The render's own integrator and the fixed-count one ([`pass_integrators`]).
+    integrators: [Integrator<'a>; 2],
+    progress: &'a dyn Progress,
+    /// Tiles done and to do, over the pass's photon batches, for progress.
+    done: AtomicU64,
+    total: u64,
+}
+
+/// What a tile leaves besides its pixels: its rays and its non-finite samples.
+type TileOutput = (RayCounts, Vec<(u32, u32)>);
+
+impl TileJob<'_> {
+    /// Adds the samples of the tile at `(x0, y0)` to its rows.
+    fn tile(&self, (x0, y0): (usize, usize), (mut sums, mut works): TileRows) -> TileOutput {
+        let (w, h) = (self.options.width, self.options.height);
+        let mut sampler = self.sampler(1);
+        let mut out = (RayCounts::default(), Vec::new());
+        for y in y0..(y0 + TILE).min(h) {
+            for x in x0..(x0 + TILE).min(w) {
+                if self.window.as_ref().is_none_or(|win| win.contains(x, y)) {
+                    let before = out.0;
+                    self.pixel((x, y), &mut sampler, &mut sums[y - y0][x - x0], &mut out);
+                    let counts = &out.0;
+                    works[y - y0][x - x0].merge(PixelWork {
+                        rays: (counts.total() - before.total())
+                            .try_into()
+                            .unwrap_or(u32::MAX),
+                        lit: counts.area_lit > before.area_lit,
+                        shadowed: counts.area_shadowed > before.area_shadowed,
+                    });
+                }
+            }
+        }
+        let n = self.done.fetch_add(1, Ordering::Relaxed) + 1;
+        self.progress.advance(n, self.total);
+        out
+    }
+
+    /// Adds the samples the plan gives pixel (x, y) in this batch to its `sum`.
+    fn pixel(
+        &self,
+        (x, y): (usize, usize),
+        sampler: &mut PixelSampler,
+        sum: &mut PixelSum,
+        (counts, non_finite): &mut TileOutput,
+    ) {
+        let (w, h) = (self.options.width, self.options.height);
+        let PixelPlan {
+            spp,
+            range,
+            seed,
+            fixed_light,
+        } = self.plan.pixel(y * w + x);
+        let range = match self.photons {
+            Some(p) => range.start.max(p.indices.start)..range.end.min(p.indices.end),
+            None => range,
+        };
+        if sampler.samples_per_pixel() != spp {
+            *sampler = self.sampler(spp);
+        }
+        let integrator = &self.integrators[usize::from(fixed_light)];
+        for index in range {
+            if self.progress.cancelled() {
+                break;
+            }
+            sampler.start(x as u32, y as u32, index, seed);
+            // No ray (outside a fisheye's circle): black, as POV-Ray renders it.
+            let l = sample_camera_ray(self.scene, &self.layout, (x, y, w, h), sampler)
+                .map_or(DVec3::ZERO, |ray| {
+                    integrator.radiance(&ray, sampler, counts)
+                });
+            if l.is_finite() {
+                sum.add(l.to_array());
+            } else {
+                sum.add([0.0; 3]);
+                non_finite.push((x as u32, y as u32));
+            }
+        }
+    }
+
+    fn sampler(&self, spp: u32) -> PixelSampler {
+        if self.options.stratified {
             PixelSampler::new(spp)
         } else {
             PixelSampler::independent(spp)
         }
-    };
-    let render_tile = |&(x0, y0): &(usize, usize)| {
-        let mut sampler = new_sampler(1);
-        let mut counts = RayCounts::default();
-        let mut sums = Vec::with_capacity(TILE * TILE);
-        let mut work = Vec::with_capacity(TILE * TILE);
-        let mut non_finite = Vec::new();
-        for y in y0..(y0 + TILE).min(h) {
-            for x in x0..(x0 + TILE).min(w) {
-                let PixelPlan {
-                    spp,
-                    range,
-                    seed,
-                    fixed_light,
-                } = plan.pixel(y * w + x);
-                let range = match photons {
-                    Some(p) => range.start.max(p.indices.start)..range.end.min(p.indices.end),
-                    None => range,
-                };
-                if !inside(x, y) {
-                    sums.push(PixelSum::default());
-                    work.push(PixelWork::default());
-                    continue;
-                }
-                if sampler.samples_per_pixel() != spp {
-                    sampler = new_sampler(spp);
-                }
-                let integrator = if fixed_light {
-                    &fixed_integrator
-                } else {
-                    &integrator
-                };
-                let mut sum = PixelSum::default();
-                let before = counts;
-                for index in range {
-                    if progress.cancelled() {
-                        break;
-                    }
-                    sampler.start(x as u32, y as u32, index, seed);
-                    // No ray (outside a fisheye's circle): black, as POV-Ray renders it.
-                    let l = sample_camera_ray(scene, &layout, (x, y, w, h), &mut sampler)
-                        .map_or(DVec3::ZERO, |ray| {
-                            integrator.radiance(&ray, &mut sampler, &mut counts)
-                        });
-                    if l.is_finite() {
-                        sum.add(l.to_array());
-                    } else {
-                        sum.add([0.0; 3]);
-                        non_finite.push((x as u32, y as u32));
-                    }
-                }
-                sums.push(sum);
-                work.push(PixelWork {
-                    rays: (counts.total() - before.total())
-                        .try_into()
-                        .unwrap_or(u32::MAX),
-                    lit: counts.area_lit > before.area_lit,
-                    shadowed: counts.area_shadowed > before.area_shadowed,
-                });
-            }
-        }
-        let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-        progress.advance(n, total);
-        (sums, work, counts, non_finite)
-    };
-    let results: Vec<_> = tiles.par_iter().map(render_tile).collect();
-    assemble(&tiles, results, w, h)
+    }
 }
 
-/// What one tile of a pass leaves: its pixels' sums and work, row by row, its rays, and
-/// its non-finite samples.
-type TileResult = (Vec<PixelSum>, Vec<PixelWork>, RayCounts, Vec<(u32, u32)>);
+/// One tile's rows of the pass's film and of its work, each a slice of the tile's width.
+type TileRows<'a> = (Vec<&'a mut [PixelSum]>, Vec<&'a mut [PixelWork]>);
 
-/// The pass's film and work from its tiles', in the tiles' fixed order.
-fn assemble(tiles: &[(usize, usize)], results: Vec<TileResult>, w: usize, h: usize) -> PassOutput {
-    let mut out = PassOutput {
-        film: Film::new(w, h),
-        rays: RayCounts::default(),
-        work: vec![PixelWork::default(); w * h],
-    };
-    for (&(x0, y0), (sums, work, counts, non_finite)) in tiles.iter().zip(results) {
-        let tw = (x0 + TILE).min(w) - x0;
-        for (i, (s, p)) in sums.into_iter().zip(work).enumerate() {
-            let at = (y0 + i / tw) * w + x0 + i % tw;
-            out.film.pixels[at] = s;
-            out.work[at] = p;
-        }
-        out.rays.add(&counts);
-        out.film.non_finite.extend(non_finite);
+/// The rows of each tile (in `tiles`' order, by their corners) of a row-major buffer `w`
+/// wide: disjoint slices, so the tiles fill the buffer in parallel.
+fn tile_rows<'a, T>(
+    buffer: &'a mut [T],
+    w: usize,
+    tiles: &[(usize, usize)],
+) -> Vec<Vec<&'a mut [T]>> {
+    let columns = w.div_ceil(TILE);
+    // Which of `tiles` each tile of the grid is (tiles outside a window are absent).
+    let mut slot = vec![usize::MAX; columns * (buffer.len() / w.max(1)).div_ceil(TILE)];
+    for (k, &(x0, y0)) in tiles.iter().enumerate() {
+        slot[y0 / TILE * columns + x0 / TILE] = k;
     }
-    out
+    let mut rows: Vec<Vec<&mut [T]>> = tiles.iter().map(|_| Vec::with_capacity(TILE)).collect();
+    for (y, row) in buffer.chunks_mut(w.max(1)).enumerate() {
+        for (tx, part) in row.chunks_mut(TILE).enumerate() {
+            if let Some(tile) = rows.get_mut(slot[y / TILE * columns + tx]) {
+                tile.push(part);
+            }
+        }
+    }
+    rows
 }
 
 /// The pass's two integrators: the render's own, and one with a fixed number of shadow rays

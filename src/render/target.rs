@@ -92,7 +92,7 @@ pub(super) fn render_to_error(
     };
     let super::PassOutput {
         mut film, mut rays, ..
-    } = run(&first, progress);
+    } = run(&first, progress, None);
     let pixels = film.pixels.len() as u64;
     let cap = u64::from(target.max_spp.max(FIRST_PASS)) * pixels;
     for pass in 1.. {
@@ -113,8 +113,8 @@ pub(super) fn render_to_error(
             share: Share::ALL,
             resume_at: &[],
         };
-        let more = run(&plan, progress);
-        film.merge(&more.film);
+        let more = run(&plan, progress, Some(film));
+        film = more.film;
         rays.add(&more.rays);
     }
     let samples = film.samples();
