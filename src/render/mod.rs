@@ -500,15 +500,23 @@ fn pilot_pass(options: &RenderOptions, run: &Pass) -> Pilot {
             .map(|(s, o)| s > o)
             .collect::<Vec<bool>>()
     };
-    let (lit, shadowed) = (around(|p| p.lit), around(|p| p.shadowed));
+    // A pixel is near a penumbra where both kinds are around; without area lights (or
+    // without a shadow of one) none is, and the windows are not summed.
+    let penumbrae = work.iter().any(|p| p.lit) && work.iter().any(|p| p.shadowed);
+    let near_penumbra: Vec<bool> = if penumbrae {
+        let (lit, shadowed) = (around(|p| p.lit), around(|p| p.shadowed));
+        lit.iter().zip(&shadowed).map(|(l, s)| l & s).collect()
+    } else {
+        Vec::new()
+    };
     let pixels = neighbour_change(&film)
         .into_iter()
         .zip(neighbour_cost(&work, w))
-        .zip(lit.iter().zip(&shadowed))
-        .map(|((change, cost), (l, s))| AdaptivePixel {
+        .enumerate()
+        .map(|(i, (change, cost))| AdaptivePixel {
             change,
             cost,
-            one_ray: !(l & s),
+            one_ray: !near_penumbra.get(i).copied().unwrap_or(false),
         })
         .collect();
     Pilot { film, rays, pixels }
