@@ -237,45 +237,47 @@ impl BoxRay {
     }
 }
 
+/// Slots of a walk's stack: a power of two at least [`DEEP_STACK`], so that a slot's index
+/// is reduced by a mask the compiler knows is in bounds, with no check per push.
+const STACK_SLOTS: usize = DEEP_STACK.next_power_of_two();
+
 /// Subtrees waiting to be visited: each one's node, or its leaf's first item and count,
 /// and its entry distance, to pass it over once a nearer hit is found. The arrays start
 /// uninitialised: clearing them took 67 of a camera ray's 1,202 instructions (10^3
-/// spheres, callgrind).
-struct Stack<const N: usize> {
-    entry: [MaybeUninit<u64>; N],
-    t: [MaybeUninit<f32>; N],
-    top: usize,
+/// spheres, callgrind). The count of entries is the walk's own local (`top`), not a field
+/// beside the arrays: there the compiler could not keep it in a register, as a store into
+/// an array might have changed it, and reloaded it after every push.
+struct Stack {
+    entry: [MaybeUninit<u64>; STACK_SLOTS],
+    t: [MaybeUninit<f32>; STACK_SLOTS],
 }
 
-impl<const N: usize> Stack<N> {
+impl Stack {
     #[inline(always)]
     fn new() -> Self {
         Stack {
-            entry: [const { MaybeUninit::uninit() }; N],
-            t: [const { MaybeUninit::uninit() }; N],
-            top: 0,
+            entry: [const { MaybeUninit::uninit() }; STACK_SLOTS],
+            t: [const { MaybeUninit::uninit() }; STACK_SLOTS],
         }
     }
 
     #[inline(always)]
-    fn push(&mut self, t: f32, child: u32, count: u16) {
-        self.entry[self.top].write(u64::from(child) | u64::from(count) << 32);
-        self.t[self.top].write(t);
-        self.top += 1;
+    fn push(&mut self, top: &mut usize, t: f32, child: u32, count: u16) {
+        let slot = *top % STACK_SLOTS;
+        self.entry[slot].write(u64::from(child) | u64::from(count) << 32);
+        self.t[slot].write(t);
+        *top += 1;
     }
 
     /// The entry distance, the child and the count of the subtree on top.
     #[inline(always)]
-    fn pop(&mut self) -> Option<(f32, u32, u16)> {
-        self.top = self.top.checked_sub(1)?;
+    fn pop(&mut self, top: &mut usize) -> Option<(f32, u32, u16)> {
+        *top = top.checked_sub(1)?;
+        let slot = *top % STACK_SLOTS;
         // SAFETY: every slot below `top` was written by `push`, and `top` only grows by
-        // `push`, so the slot at the new `top` holds a pushed entry.
-        let (e, t) = unsafe {
-            (
-                self.entry[self.top].assume_init(),
-                self.t[self.top].assume_init(),
-            )
-        };
+        // `push`, so the slot at the new `top` holds a pushed entry (the tree is shallow
+        // enough that `top` stays below STACK_SLOTS: see DEEP_STACK).
+        let (e, t) = unsafe { (self.entry[slot].assume_init(), self.t[slot].assume_init()) };
         Some((t, e as u32, (e >> 32) as u16))
     }
 }
@@ -283,8 +285,9 @@ impl<const N: usize> Stack<N> {
 /// Pushes the lanes met in the node's order for the ray's octant, all but the first,
 /// later ones deeper; returns the first.
 #[inline(always)]
-fn push_in_order<const N: usize>(
-    stack: &mut Stack<N>,
+fn push_in_order(
+    stack: &mut Stack,
+    top: &mut usize,
     node: &Node,
     t: &[f32; WIDTH],
     mask: u32,
@@ -296,7 +299,7 @@ fn push_in_order<const N: usize>(
         let lane = usize::from(order >> (2 * i) & 3);
         if mask >> lane & 1 == 1 {
             if next != usize::MAX {
-                stack.push(t[next], node.child[next], node.count[next]);
+                stack.push(top, t[next], node.child[next], node.count[next]);
             }
             next = lane;
         }
@@ -331,7 +334,8 @@ impl Bvh {
             return self.traverse_few(ray, t_max, visit);
         }
         let r = BoxRay::new(ray);
-        let mut stack = Stack::<DEEP_STACK>::new();
+        let mut stack = Stack::new();
+        let mut top = 0;
         let (mut child, mut count) = (0u32, 0u16);
         // t_max in single precision, rounded up, for the box tests; and with the tests'
         // slack, for passing over subtrees entered beyond it. Updated when t_max shrinks.
@@ -355,14 +359,14 @@ impl Bvh {
                 let node = &self.nodes[child as usize];
                 let (t, mask) = r.test(node, reach);
                 if mask != 0 {
-                    let lane = push_in_order(&mut stack, node, &t, mask, r.octant);
+                    let lane = push_in_order(&mut stack, &mut top, node, &t, mask, r.octant);
                     (child, count) = (node.child[lane], node.count[lane]);
                     continue;
                 }
             }
             // The next subtree still entered before the nearest hit found so far.
             loop {
-                let Some((t_entry, c, n)) = stack.pop() else {
+                let Some((t_entry, c, n)) = stack.pop(&mut top) else {
                     return;
                 };
                 if t_entry <= beyond {
