@@ -338,7 +338,10 @@ impl ShapeKind {
                 let n = box_face_normal(part);
                 (n, n)
             }
-            _ => (self.normal(p, tables), self.shading_normal(p, tables)),
+            _ => {
+                let n = self.normal(p, tables);
+                (n, self.shading_normal_or(p, tables, n))
+            }
         }
     }
 
@@ -543,6 +546,13 @@ impl ShapeKind {
 
     /// The normal used for shading; differs from the geometric one on smooth triangles.
     pub fn shading_normal(&self, p: DVec3, tables: &ShapeTables) -> DVec3 {
+        self.shading_normal_or(p, tables, self.normal(p, tables))
+    }
+
+    /// [`ShapeKind::shading_normal`] given the geometric normal `normal` at `p`, which is
+    /// the shading normal of every shape but a smooth triangle: not computed twice (an
+    /// isosurface's takes six function evaluations).
+    fn shading_normal_or(&self, p: DVec3, tables: &ShapeTables, normal: DVec3) -> DVec3 {
         if let ShapeKind::Triangle(i) = *self {
             let t = &tables.triangles[i as usize];
             if let Some(n) = t.normals {
@@ -553,7 +563,7 @@ impl ShapeKind {
                 }
             }
         }
-        self.normal(p, tables)
+        normal
     }
 
     /// The surface's own (u, v) at an object-space point on it, for `uv_mapping`, as

@@ -1052,11 +1052,17 @@ impl World {
         let point = ray.at(hit.t);
         let local = self.local_point(p, point);
         let (normal, shading) = p.shape.normals(local, hit.part, &self.tables);
+        // Only smooth triangles shade with a normal of their own; the others' is the
+        // geometric one, transformed and normalised once.
+        let smooth = shading != normal;
         let (normal, shading) = if p.transform == NO_TRANSFORM {
             (normal, shading)
         } else {
             let t = &self.transforms[p.transform as usize];
-            (t.normal(normal), t.normal(shading))
+            (
+                t.normal(normal),
+                if smooth { t.normal(shading) } else { shading },
+            )
         };
         let uv = self.uv(p, hit.part, point);
         let blend = self.blend(p, hit.part, local);
@@ -1066,7 +1072,11 @@ impl World {
         };
         let sign = if hit.flipped { -1.0 } else { 1.0 };
         let normal = normal.normalize_or(DVec3::Y) * sign;
-        let mut shading_normal = shading.normalize_or(normal) * sign;
+        let mut shading_normal = if smooth {
+            shading.normalize_or(normal) * sign
+        } else {
+            normal
+        };
         if shading_normal.dot(normal) < 0.0 {
             shading_normal = -shading_normal;
         }
