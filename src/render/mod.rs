@@ -539,6 +539,10 @@ impl Share {
 
     /// This part of `count` samples.
     fn of(&self, count: u32) -> Range<u32> {
+        if self.range == (0..self.spp) {
+            // The whole, without two divisions a pixel.
+            return 0..count;
+        }
         let scale = |k: u32| (u64::from(k) * u64::from(count) / u64::from(self.spp)) as u32;
         scale(self.range.start)..scale(self.range.end)
     }
@@ -644,13 +648,9 @@ impl SamplePlan<'_> {
 /// what is decided from this does not depend on its own samples, which stay in its mean.
 fn neighbour_noise(pilot: &Film) -> Vec<f64> {
     let sigma: Vec<f64> = pilot.pixels.iter().map(sample_deviation).collect();
-    let (w, h) = (pilot.width, pilot.height);
-    (0..w * h)
-        .map(|i| {
-            let (near, n) = neighbours(w, h, i);
-            near[..n].iter().map(|&j| sigma[j]).fold(0.0, f64::max)
-        })
-        .collect()
+    per_neighbourhood(pilot.width, pilot.height, |near| {
+        near.iter().map(|&j| sigma[j]).fold(0.0, f64::max)
+    })
 }
 
 /// How much the image changes around each pixel after a one-sample pilot: the range of its
@@ -658,33 +658,31 @@ fn neighbour_noise(pilot: &Film) -> Vec<f64> {
 /// or a texture between them shows, and so does noise; the pixel itself is left out.
 fn neighbour_change(pilot: &Film) -> Vec<f64> {
     let values: Vec<[f64; 3]> = pilot.pixels.iter().map(PixelSum::mean).collect();
-    let (w, h) = (pilot.width, pilot.height);
-    (0..w * h)
-        .map(|i| {
-            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-            let (near, n) = neighbours(w, h, i);
-            for v in near[..n].iter().map(|&j| values[j]) {
-                for c in 0..3 {
-                    lo[c] = lo[c].min(v[c]);
-                    hi[c] = hi[c].max(v[c]);
+    per_neighbourhood(pilot.width, pilot.height, |near| {
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for v in near.iter().map(|&j| values[j]) {
+            // As f64::min and max (a NaN is passed over), without their NaN tests:
+            // this loop was most of the pilot's analysis.
+            for c in 0..3 {
+                if v[c] < lo[c] {
+                    lo[c] = v[c];
+                }
+                if v[c] > hi[c] {
+                    hi[c] = v[c];
                 }
             }
-            (0..3).map(|c| (hi[c] - lo[c]).max(0.0)).sum::<f64>() / 3.0
-        })
-        .collect()
+        }
+        (0..3).map(|c| (hi[c] - lo[c]).max(0.0)).sum::<f64>() / 3.0
+    })
 }
 
 /// The rays a sample costs around each pixel: the mean over its eight neighbours' pilot
 /// samples (at least 1), the pixel itself left out.
 fn neighbour_cost(work: &[PixelWork], w: usize) -> Vec<f64> {
-    let h = work.len() / w.max(1);
-    (0..w * h)
-        .map(|i| {
-            let (near, n) = neighbours(w, h, i);
-            let rays: f64 = near[..n].iter().map(|&j| f64::from(work[j].rays)).sum();
-            (rays / f64::max(n as f64, 1.0)).max(1.0)
-        })
-        .collect()
+    per_neighbourhood(w, work.len() / w.max(1), |near| {
+        let rays: f64 = near.iter().map(|&j| f64::from(work[j].rays)).sum();
+        (rays / f64::max(near.len() as f64, 1.0)).max(1.0)
+    })
 }
 
 /// Per pixel (rows of `w`), the sum of `values` over the (2r + 1) square around it, clipped
@@ -700,11 +698,29 @@ fn window_sums(values: &[u32], w: usize, r: usize) -> Vec<u32> {
         .collect()
 }
 
-/// The pixels of the 3 x 3 block around pixel `i` of a w x h image (row-major), itself
-/// left out, and how many there are (fewer at the borders). An array, not an iterator of
-/// iterators: over a 640x480 pilot the nested iterators cost 1,300 instructions a pixel.
-fn neighbours(w: usize, h: usize, i: usize) -> ([usize; 8], usize) {
-    let (x, y) = (i % w, i / w);
+/// `f` of each pixel's neighbours in a w x h image (row-major): the pixels of the 3 x 3
+/// block around it, itself left out (fewer at the borders). Plain loops and arrays: over a
+/// 640x480 pilot, iterators of iterators cost 1,300 instructions a pixel.
+fn per_neighbourhood<T>(w: usize, h: usize, mut f: impl FnMut(&[usize]) -> T) -> Vec<T> {
+    let mut out = Vec::with_capacity(w * h);
+    for y in 0..h {
+        for x in 0..w {
+            let (near, n) = neighbours(w, h, x, y);
+            out.push(f(&near[..n]));
+        }
+    }
+    out
+}
+
+/// The neighbours of pixel (x, y) ([`per_neighbourhood`]) and how many there are; inside
+/// the borders, fixed offsets.
+#[inline]
+fn neighbours(w: usize, h: usize, x: usize, y: usize) -> ([usize; 8], usize) {
+    let i = y * w + x;
+    if x > 0 && y > 0 && x + 1 < w && y + 1 < h {
+        let (a, b) = (i - w, i + w);
+        return ([a - 1, a, a + 1, i - 1, i + 1, b - 1, b, b + 1], 8);
+    }
     let mut near = [0; 8];
     let mut n = 0;
     for yy in y.saturating_sub(1)..(y + 2).min(h) {
@@ -967,18 +983,25 @@ impl TileJob<'_> {
         let mut out = (RayCounts::default(), Vec::new());
         for y in y0..(y0 + TILE).min(h) {
             for x in x0..(x0 + TILE).min(w) {
-                if self.window.as_ref().is_none_or(|win| win.contains(x, y)) {
-                    let before = out.0;
-                    self.pixel((x, y), &mut sampler, &mut sums[y - y0][x - x0], &mut out);
-                    let counts = &out.0;
-                    works[y - y0][x - x0].merge(PixelWork {
-                        rays: (counts.total() - before.total())
-                            .try_into()
-                            .unwrap_or(u32::MAX),
-                        lit: counts.area_lit > before.area_lit,
-                        shadowed: counts.area_shadowed > before.area_shadowed,
-                    });
+                if !self.window.as_ref().is_none_or(|win| win.contains(x, y)) {
+                    continue;
                 }
+                let plan = self.pixel_plan(x, y);
+                // Nothing to add (an adaptive pass leaves many pixels without samples).
+                if plan.range.is_empty() {
+                    continue;
+                }
+                let before = out.0;
+                let sum = &mut sums[y - y0][x - x0];
+                self.pixel((x, y), plan, &mut sampler, sum, &mut out);
+                let counts = &out.0;
+                works[y - y0][x - x0].merge(PixelWork {
+                    rays: (counts.total() - before.total())
+                        .try_into()
+                        .unwrap_or(u32::MAX),
+                    lit: counts.area_lit > before.area_lit,
+                    shadowed: counts.area_shadowed > before.area_shadowed,
+                });
             }
         }
         let n = self.done.fetch_add(1, Ordering::Relaxed) + 1;
@@ -986,10 +1009,23 @@ impl TileJob<'_> {
         out
     }
 
-    /// Adds the samples the plan gives pixel (x, y) in this batch to its `sum`.
+    /// The plan's samples of pixel (x, y) in this batch.
+    fn pixel_plan(&self, x: usize, y: usize) -> PixelPlan {
+        let plan = self.plan.pixel(y * self.options.width + x);
+        match self.photons {
+            Some(p) => PixelPlan {
+                range: plan.range.start.max(p.indices.start)..plan.range.end.min(p.indices.end),
+                ..plan
+            },
+            None => plan,
+        }
+    }
+
+    /// Adds the samples `plan` gives pixel (x, y) to its `sum`.
     fn pixel(
         &self,
         (x, y): (usize, usize),
+        plan: PixelPlan,
         sampler: &mut PixelSampler,
         sum: &mut PixelSum,
         (counts, non_finite): &mut TileOutput,
@@ -1000,11 +1036,7 @@ impl TileJob<'_> {
             range,
             seed,
             fixed_light,
-        } = self.plan.pixel(y * w + x);
-        let range = match self.photons {
-            Some(p) => range.start.max(p.indices.start)..range.end.min(p.indices.end),
-            None => range,
-        };
+        } = plan;
         if sampler.samples_per_pixel() != spp {
             *sampler = self.sampler(spp);
         }
