@@ -294,9 +294,7 @@ impl ShapeKind {
                 sphere_first_hit(ray, center, radius, t_max).map(|t| (t, 0))
             }
             ShapeKind::Plane { normal, distance } => {
-                let denom = normal.dot(ray.direction);
-                let t = (distance - normal.dot(ray.origin)) / denom;
-                (denom != 0.0 && t > 0.0 && t < t_max).then_some((t, 0))
+                plane_hit(ray, normal, distance, t_max).map(|t| (t, 0))
             }
             ShapeKind::Mesh(i) => tables.meshes[i as usize].hit(ray, t_max),
             ShapeKind::HeightField(i) => tables.height_fields[i as usize].hit(ray, t_max),
@@ -661,6 +659,14 @@ impl ShapeKind {
             ShapeKind::Disc { .. } | ShapeKind::Triangle(_) | ShapeKind::Polygon(_) => false,
         }
     }
+}
+
+/// Where a ray meets the plane n . p = distance within (0, t_max).
+#[inline(always)]
+pub fn plane_hit(ray: &Ray, normal: DVec3, distance: f64, t_max: f64) -> Option<f64> {
+    let denom = normal.dot(ray.direction);
+    let t = (distance - normal.dot(ray.origin)) / denom;
+    (denom != 0.0 && t > 0.0 && t < t_max).then_some(t)
 }
 
 /// A sphere's first crossing in (0, t_max), for callers that test spheres before any

@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 
-use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform, sphere_first_hit};
+use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform, plane_hit, sphere_first_hit};
 
 /// Per-primitive flags, tested as a mask so each kind of ray can skip some.
 pub mod flags {
@@ -609,17 +609,23 @@ impl World {
         if p.flags & skip != 0 {
             return None;
         }
-        // A world-space shape reads the ray in place rather than a copy of it; a sphere,
-        // the commonest, skips the shapes' dispatch.
-        let (t, part) =
-            if let (ShapeKind::Sphere { center, radius }, NO_TRANSFORM) = (p.shape, p.transform) {
+        // A world-space shape reads the ray in place rather than a copy of it; a sphere
+        // and a plane, the commonest (every shadow ray tests a scene's floor), skip the
+        // shapes' dispatch and its call (reflection: 44 instructions a plane test, 19 of
+        // them the call's).
+        let (t, part) = match (p.shape, p.transform) {
+            (ShapeKind::Sphere { center, radius }, NO_TRANSFORM) => {
                 (sphere_first_hit(ray, center, radius, t_max)?, 0)
-            } else if p.transform == NO_TRANSFORM {
-                p.shape.intersect_part(ray, t_max, &self.tables)?
-            } else {
-                let local = self.transforms[p.transform as usize].inverse_ray(ray);
-                p.shape.intersect_part(&local, t_max, &self.tables)?
-            };
+            }
+            (ShapeKind::Plane { normal, distance }, NO_TRANSFORM) => {
+                (plane_hit(ray, normal, distance, t_max)?, 0)
+            }
+            (shape, NO_TRANSFORM) => shape.intersect_part(ray, t_max, &self.tables)?,
+            (shape, transform) => {
+                let local = self.transforms[transform as usize].inverse_ray(ray);
+                shape.intersect_part(&local, t_max, &self.tables)?
+            }
+        };
         Some(Hit {
             t,
             primitive: i as u32,
