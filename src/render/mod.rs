@@ -356,7 +356,8 @@ type Pass<'a> = dyn Fn(&SamplePlan, &dyn Progress, Option<Film>) -> PassOutput +
 struct PassOutput {
     film: Film,
     rays: RayCounts,
-    /// Per pixel, what its samples met.
+    /// Per pixel, what its samples met, where the plan reads it ([`SamplePlan::records_work`];
+    /// else empty).
     work: Vec<PixelWork>,
 }
 
@@ -585,6 +586,19 @@ struct PixelPlan {
 }
 
 impl SamplePlan<'_> {
+    /// Whether the pass records each pixel's work: only the adaptive pilot's (the uniform
+    /// plan with a fixed light count) is read, and a render's other passes need not fill
+    /// 8 bytes a pixel.
+    fn records_work(&self) -> bool {
+        matches!(
+            self,
+            SamplePlan::Uniform {
+                fixed_light: Some(_),
+                ..
+            }
+        )
+    }
+
     /// The sample indices some pixel of the plan takes (a superset): the photon passes a
     /// render shoots, so a shard of an adaptive render shoots only its part's.
     fn index_span(&self) -> Range<u32> {
@@ -832,7 +846,11 @@ fn render_pass(
     let mut out = PassOutput {
         film: film.unwrap_or_else(|| Film::new(options.width, options.height)),
         rays: RayCounts::default(),
-        work: vec![PixelWork::default(); options.width * options.height],
+        work: if plan.records_work() {
+            vec![PixelWork::default(); options.width * options.height]
+        } else {
+            Vec::new()
+        },
     };
     let shooter = Integrator::new(scene, options);
     let first = scene
@@ -994,8 +1012,12 @@ impl TileJob<'_> {
                 let before = out.0;
                 let sum = &mut sums[y - y0][x - x0];
                 self.pixel((x, y), plan, &mut sampler, sum, &mut out);
+                // Rows only where the pass records work.
+                let Some(work) = works.get_mut(y - y0) else {
+                    continue;
+                };
                 let counts = &out.0;
-                works[y - y0][x - x0].merge(PixelWork {
+                work[x - x0].merge(PixelWork {
                     rays: (counts.total() - before.total())
                         .try_into()
                         .unwrap_or(u32::MAX),
@@ -1073,12 +1095,16 @@ impl TileJob<'_> {
 type TileRows<'a> = (Vec<&'a mut [PixelSum]>, Vec<&'a mut [PixelWork]>);
 
 /// The rows of each tile (in `tiles`' order, by their corners) of a row-major buffer `w`
-/// wide: disjoint slices, so the tiles fill the buffer in parallel.
+/// wide: disjoint slices, so the tiles fill the buffer in parallel. An empty buffer (work a
+/// pass does not record) gives every tile no rows.
 fn tile_rows<'a, T>(
     buffer: &'a mut [T],
     w: usize,
     tiles: &[(usize, usize)],
 ) -> Vec<Vec<&'a mut [T]>> {
+    if buffer.is_empty() {
+        return tiles.iter().map(|_| Vec::new()).collect();
+    }
     let columns = w.div_ceil(TILE);
     // Which of `tiles` each tile of the grid is (tiles outside a window are absent).
     let mut slot = vec![usize::MAX; columns * (buffer.len() / w.max(1)).div_ceil(TILE)];
