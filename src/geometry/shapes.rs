@@ -542,14 +542,9 @@ impl ShapeKind {
         }
     }
 
-    /// The normal used for shading; differs from the geometric one on smooth triangles.
-    pub fn shading_normal(&self, p: DVec3, tables: &ShapeTables) -> DVec3 {
-        self.shading_normal_or(p, tables, self.normal(p, tables))
-    }
-
-    /// [`ShapeKind::shading_normal`] given the geometric normal `normal` at `p`, which is
-    /// the shading normal of every shape but a smooth triangle: not computed twice (an
-    /// isosurface's takes six function evaluations).
+    /// The normal used for shading, given the geometric normal `normal` at `p`: the same
+    /// for every shape but a smooth triangle, so not computed twice (an isosurface's takes
+    /// six function evaluations).
     fn shading_normal_or(&self, p: DVec3, tables: &ShapeTables, normal: DVec3) -> DVec3 {
         if let ShapeKind::Triangle(i) = *self {
             let t = &tables.triangles[i as usize];
@@ -1414,7 +1409,7 @@ mod tests {
             )
             .is_none()
         );
-        let n = tri.shading_normal(DVec3::new(0.0, 0.5, 0.0), &tables);
+        let (_, n) = tri.normals(DVec3::new(0.0, 0.5, 0.0), 0, &tables);
         assert!((n - DVec3::new(0.5, 0.0, 0.5)).length() < 1e-12, "{n}");
         let poly = ShapeKind::Polygon(0);
         let through = |x: f64, y: f64| {
