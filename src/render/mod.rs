@@ -306,6 +306,7 @@ fn uniform_passes(
             first: range.start,
             checkpoint,
             seed: options.seed,
+            position_seed: options.seed,
             fixed_light: None,
         };
         let PassOutput {
@@ -391,7 +392,8 @@ impl PixelWork {
 ///   area light arrived and some other's was stopped) the pilot sample is left out and
 ///   fresh samples cover the light grid ([`LightSamples::Cover`]);
 /// - elsewhere every shadow ray around agreed, so one shadow ray per sample is exact: the
-///   pilot sample stays;
+///   pilot sample stays, and the pixel's later samples take the positions after its
+///   ([`PositionPlan`]);
 /// - all share the time `spp` samples each would take (`spp - 1` where the pilot stays) as
 ///   [`allocate`] says.
 ///
@@ -482,15 +484,7 @@ struct Pilot {
 
 /// The pilot of [`adaptive_passes`] over the whole image and the decisions read from it.
 fn pilot_pass(options: &RenderOptions, run: &Pass) -> Pilot {
-    let pilot = SamplePlan::Uniform {
-        spp: 1,
-        range: 0..1,
-        first: 0,
-        checkpoint: None,
-        seed: options.seed ^ 0xad47_1be5_5eed_0001,
-        fixed_light: Some(PILOT_LIGHT_RAYS),
-    };
-    let PassOutput { film, rays, work } = run(&pilot, &(), None);
+    let PassOutput { film, rays, work } = run(&pilot_plan(options), &(), None);
     let w = film.width;
     // Shadow rays around the pixel (itself left out) that arrived, and that were stopped.
     let around = |flag: fn(&PixelWork) -> bool| {
@@ -521,6 +515,22 @@ fn pilot_pass(options: &RenderOptions, run: &Pass) -> Pilot {
         })
         .collect();
     Pilot { film, rays, pixels }
+}
+
+/// The adaptive pilot: one sample per pixel, its light sampling and its values apart from
+/// the render's.
+fn pilot_plan(options: &RenderOptions) -> SamplePlan<'static> {
+    SamplePlan::Uniform {
+        spp: 1,
+        range: 0..1,
+        first: 0,
+        checkpoint: None,
+        seed: options.seed ^ 0xad47_1be5_5eed_0001,
+        // But its position is the render's own: point 0 of the sequence whose next
+        // points the pixel's later samples take where the pilot sample stays.
+        position_seed: options.seed,
+        fixed_light: Some(PILOT_LIGHT_RAYS),
+    }
 }
 
 /// A render's part of each pixel's samples: samples `range` of `spp`, scaled to each
@@ -560,6 +570,8 @@ enum SamplePlan<'a> {
         first: u32,
         checkpoint: Option<&'a Film>,
         seed: u64,
+        /// The seed of the pixel positions' sequences (sample i takes point i).
+        position_seed: u64,
         fixed_light: Option<u32>,
     },
     /// Adaptive sampling: pixel i has counts[i] samples (all of its own strata; none
@@ -583,6 +595,17 @@ struct PixelPlan {
     /// Shade with the pass's fixed-count integrator (one shadow ray per area light, or the
     /// pilot's [`PILOT_LIGHT_RAYS`]) instead of the render's own light sampling.
     fixed_light: bool,
+    position: PositionPlan,
+}
+
+/// Where a pixel's samples take their positions: sample i takes point `first + i` of the
+/// pixel's position sequence under `seed` ([`PixelSampler::pixel_position`]). A pilot
+/// sample that stays in the pixel's mean is point 0 of the sequence the pixel's later
+/// samples continue, so that together they are stratified as one set of samples.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct PositionPlan {
+    seed: u64,
+    first: u32,
 }
 
 impl SamplePlan<'_> {
@@ -626,6 +649,7 @@ impl SamplePlan<'_> {
                 first,
                 checkpoint,
                 seed,
+                position_seed,
                 fixed_light,
             } => {
                 let done = checkpoint.map_or(0, |c| c.pixels[i].count);
@@ -634,6 +658,10 @@ impl SamplePlan<'_> {
                     range: range.start.max(first + done)..range.end,
                     seed: *seed,
                     fixed_light: fixed_light.is_some(),
+                    position: PositionPlan {
+                        seed: *position_seed,
+                        first: 0,
+                    },
                 }
             }
             SamplePlan::PerPixel {
@@ -650,6 +678,11 @@ impl SamplePlan<'_> {
                     range: first.min(part.end)..part.end,
                     seed: *seed,
                     fixed_light: one_ray[i],
+                    // Where the pilot sample stays, it was point 0.
+                    position: PositionPlan {
+                        seed: *seed,
+                        first: u32::from(one_ray[i]),
+                    },
                 }
             }
         }
@@ -809,7 +842,7 @@ fn sample_camera_ray(
     sampler: &mut PixelSampler,
 ) -> Option<Ray> {
     sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
-    let (u, v) = sampler.get_2d();
+    let (u, v) = sampler.pixel_position();
     if let Some(mesh) = &scene.mesh_camera {
         return mesh.ray((x, y, w, h), (u, v));
     }
@@ -1058,6 +1091,7 @@ impl TileJob<'_> {
             range,
             seed,
             fixed_light,
+            position,
         } = plan;
         if sampler.samples_per_pixel() != spp {
             *sampler = self.sampler(spp);
@@ -1068,6 +1102,10 @@ impl TileJob<'_> {
                 break;
             }
             sampler.start(x as u32, y as u32, index, seed);
+            if position != (PositionPlan { seed, first: 0 }) {
+                let point = index + position.first;
+                sampler.set_position(x as u32, y as u32, position.seed, point);
+            }
             // No ray (outside a fisheye's circle): black, as POV-Ray renders it.
             let l = sample_camera_ray(self.scene, &self.layout, (x, y, w, h), sampler)
                 .map_or(DVec3::ZERO, |ray| {
@@ -1205,6 +1243,33 @@ mod tests {
             }
         }
         assert_eq!(window_sums(&values, w, 0), values);
+    }
+
+    #[test]
+    fn a_pilot_sample_that_stays_is_the_first_of_its_pixels_positions() {
+        let options = RenderOptions {
+            seed: 77,
+            ..RenderOptions::default()
+        };
+        let pilot = pilot_plan(&options).pixel(1);
+        assert_eq!(pilot.range, 0..1);
+        let at = |seed, first| PositionPlan { seed, first };
+        assert_eq!(pilot.position, at(77, 0));
+        // Pixel 0 is near a penumbra (its pilot left out), pixel 1 not.
+        let plan = SamplePlan::PerPixel {
+            counts: &[6, 5],
+            seed: options.seed,
+            one_ray: &[false, true],
+            share: Share {
+                range: 0..8,
+                spp: 8,
+            },
+            resume_at: &[],
+        };
+        let (near, far) = (plan.pixel(0), plan.pixel(1));
+        assert_eq!((near.range, near.position), (0..6, at(77, 0)));
+        // Samples 0 to 4 take points 1 to 5, after the pilot's.
+        assert_eq!((far.range, far.position), (0..5, at(77, 1)));
     }
 
     #[test]

@@ -4,7 +4,9 @@
 //! sample count: a 1D value is jittered in one of `n` strata, a 2D value is a point of an
 //! Owen-scrambled Sobol (0, 2)-sequence (as pbrt-v4's padded Sobol sampler), the sample's
 //! stratum or point chosen by a permutation of the indices drawn independently per pixel
-//! and dimension, and the jitter and scrambling come from hashes. So any range of sample
+//! and dimension (except the pixel position, whose points go in order, so that a pixel's
+//! later samples continue the strata of its first), and the jitter and scrambling come
+//! from hashes. So any range of sample
 //! indices can be rendered alone, on any machine and in any order, and the parts sum to
 //! exactly the full render.
 
@@ -16,6 +18,8 @@ use rand_pcg::Pcg32;
 pub struct PixelSampler {
     pixel_key: u64,
     index: u32,
+    /// The pixel position's own sequence: its pixel key and the index of this sample's point.
+    position: (u64, u32),
     samples_per_pixel: u32,
     dimension: u32,
     /// False: every value is an independent uniform draw (no strata), the baseline whose
@@ -29,6 +33,7 @@ impl PixelSampler {
         PixelSampler {
             pixel_key: 0,
             index: 0,
+            position: (0, 0),
             samples_per_pixel: samples_per_pixel.max(1),
             dimension: 0,
             stratified: true,
@@ -49,9 +54,35 @@ impl PixelSampler {
 
     /// Starts sample `index` of pixel (x, y) under `seed`.
     pub fn start(&mut self, x: u32, y: u32, index: u32, seed: u64) {
-        self.pixel_key = mix(mix(seed ^ 0x9e37_79b9_7f4a_7c15) ^ ((x as u64) << 32 | y as u64));
+        self.pixel_key = pixel_key(x, y, seed);
         self.index = index;
+        self.position = (self.pixel_key, index);
         self.dimension = 0;
+    }
+
+    /// Takes this sample's pixel position from point `point` of the pixel's position
+    /// sequence under `seed` (by default, point `index` under the sample's own seed).
+    pub fn set_position(&mut self, x: u32, y: u32, seed: u64, point: u32) {
+        self.position = (pixel_key(x, y, seed), point);
+    }
+
+    /// The sample's position in its pixel, as [`get_2d`](Self::get_2d) draws but with the
+    /// points taken in order: sample i is point i of the pixel's Owen-scrambled Sobol
+    /// sequence (or the point [`set_position`](Self::set_position) names). Any first n
+    /// points are well spread (every first 2^k a (0, k, 2)-net), so samples added after
+    /// the first few continue their strata: the adaptive pilot's sample, point 0, and
+    /// the pixel's later ones, points 1 to n, are stratified as one set. Drawn through a
+    /// permutation instead, a pilot sample fell anywhere in the strata of the samples
+    /// after it (640x480 adaptive, RMSE at 4 spp 7-13% higher on scenes of edges).
+    pub fn pixel_position(&mut self) -> (f64, f64) {
+        let (key, j) = self.position;
+        let key = mix(key ^ mix(self.dimension as u64 + 1));
+        self.dimension += 2;
+        if !self.stratified {
+            let mut rng = Pcg32::new(mix(key ^ j as u64), key | 1);
+            return (unit_f64(&mut rng), unit_f64(&mut rng));
+        }
+        sobol_point(j, mix(key))
     }
 
     /// The hash of this pixel's `dimension`, shared by its samples.
@@ -96,13 +127,7 @@ impl PixelSampler {
             return (unit_f64(&mut rng), unit_f64(&mut rng));
         }
         let j = permute(self.index, self.samples_per_pixel, (key >> 32) as u32);
-        let scramble = mix(key);
-        // Sobol's first two dimensions are j.reverse_bits() and sobol_second(j); the
-        // scrambling works on their bits reversed, which are j and sobol_second_reversed(j).
-        let x = owen_scrambled_reversed(j, scramble as u32);
-        let y = owen_scrambled_reversed(sobol_second_reversed(j), (scramble >> 32) as u32);
-        let unit = |v: u32| (f64::from(v) + 0.5) * (1.0 / 4_294_967_296.0);
-        (unit(x), unit(y))
+        sobol_point(j, mix(key))
     }
 
     /// Sample `j` of `n` drawn in place of this one: the same pixel, its values from sample
@@ -114,6 +139,7 @@ impl PixelSampler {
             ..PixelSampler::new(self.samples_per_pixel.saturating_mul(n))
         };
         sub.pixel_key = self.pixel_key;
+        sub.position = self.position;
         sub.index = self.index * n + j;
         sub.dimension = self.dimension;
         sub
@@ -146,6 +172,10 @@ impl PixelSampler {
     }
 }
 
+fn pixel_key(x: u32, y: u32, seed: u64) -> u64 {
+    mix(mix(seed ^ 0x9e37_79b9_7f4a_7c15) ^ ((x as u64) << 32 | y as u64))
+}
+
 /// Salts that keep the shared and free streams apart from the stratified ones.
 const SHARED: u64 = 0x5348_4152_4544_0001;
 const FREE: u64 = 0x4652_4545_0000_0001;
@@ -163,6 +193,16 @@ pub(crate) fn unit_f64(rng: &mut Pcg32) -> f64 {
     let hi = rng.next_u32() as u64;
     let lo = rng.next_u32() as u64;
     ((hi << 21) ^ lo) as f64 * (1.0 / (1u64 << 53) as f64)
+}
+
+/// Point `j` of a Sobol (0, 2)-sequence under Owen scrambling by `scramble`. Sobol's first
+/// two dimensions are j.reverse_bits() and sobol_second(j); the scrambling works on their
+/// bits reversed, which are j and sobol_second_reversed(j).
+fn sobol_point(j: u32, scramble: u64) -> (f64, f64) {
+    let x = owen_scrambled_reversed(j, scramble as u32);
+    let y = owen_scrambled_reversed(sobol_second_reversed(j), (scramble >> 32) as u32);
+    let unit = |v: u32| (f64::from(v) + 0.5) * (1.0 / 4_294_967_296.0);
+    (unit(x), unit(y))
 }
 
 /// The second dimension of Sobol's sequence at index `j` (a 32-bit fraction) with its bits
@@ -369,6 +409,41 @@ mod tests {
                         "spp {spp}, grid {cols}x{rows}: {hits:?}"
                     );
                 }
+            }
+        }
+    }
+
+    /// The pixel positions go in order: a first sample (the adaptive pilot, drawn under a
+    /// seed of its own) at point 0 and n later samples of a pixel with n samples at points
+    /// 1 to n are the first n + 1 points of one sequence, a (0, k, 2)-net whenever n + 1 =
+    /// 2^k. (Drawn through the permutation or under the pilot's own seed, the first point
+    /// falls anywhere in the others' strata, and the cells of some grid hold two.)
+    #[test]
+    fn pixel_positions_continue_a_first_sample() {
+        let (x, y, seed) = (5, 9, 3);
+        for later in [1u32, 3, 7, 15, 63] {
+            let mut first = PixelSampler::new(1);
+            first.start(x, y, 0, seed ^ 0xad47);
+            first.set_position(x, y, seed, 0);
+            let mut points = vec![first.pixel_position()];
+            let mut s = PixelSampler::new(later);
+            for i in 0..later {
+                s.start(x, y, i, seed);
+                s.set_position(x, y, seed, i + 1);
+                points.push(s.pixel_position());
+            }
+            let k = (later + 1).trailing_zeros();
+            for a in 0..=k {
+                let (cols, rows) = (1u32 << a, 1u32 << (k - a));
+                let mut hits = vec![0u32; (cols * rows) as usize];
+                for &(u, v) in &points {
+                    hits[((v * f64::from(rows)) as u32 * cols + (u * f64::from(cols)) as u32)
+                        as usize] += 1;
+                }
+                assert!(
+                    hits.iter().all(|&h| h == 1),
+                    "1 + {later} samples, grid {cols}x{rows}: {hits:?}"
+                );
             }
         }
     }

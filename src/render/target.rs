@@ -88,6 +88,7 @@ pub(super) fn render_to_error(
         first: 0,
         checkpoint: None,
         seed: pass_seed(options.seed, 0),
+        position_seed: pass_seed(options.seed, 0),
         fixed_light: None,
     };
     let super::PassOutput {
