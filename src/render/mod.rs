@@ -450,6 +450,7 @@ fn adaptive_passes(
             one_ray: &one_ray,
             share: Share { range, ..share },
             resume_at: &resume_at,
+            positions: (options.seed, FirstPoints::AfterPilot),
         };
         let more = run(&plan, progress, Some(film));
         rays.add(&more.rays);
@@ -577,14 +578,25 @@ enum SamplePlan<'a> {
     /// Adaptive sampling: pixel i has counts[i] samples (all of its own strata; none
     /// where the count is 0) and takes those of its `share` from `resume_at[i]` on (a
     /// checkpoint holds those before; empty: none), with one shadow ray per light per
-    /// sample where one_ray[i].
+    /// sample where one_ray[i]. Their positions come from the sequences of the seed
+    /// `positions.0`, from the points `positions.1` says on.
     PerPixel {
         counts: &'a [u32],
         seed: u64,
         one_ray: &'a [bool],
         share: Share,
         resume_at: &'a [u32],
+        positions: (u64, FirstPoints<'a>),
     },
+}
+
+/// Where a per-pixel plan's sample 0 of each pixel takes its position: after the points
+/// the pixel's earlier samples took, so that together they stay one stratified set.
+enum FirstPoints<'a> {
+    /// After the adaptive pilot's point 0 where the pilot sample stays (`one_ray`), else 0.
+    AfterPilot,
+    /// At each pixel's listed point (the samples that earlier passes took).
+    Listed(&'a [u32]),
 }
 
 /// One pixel's part of a plan.
@@ -670,6 +682,7 @@ impl SamplePlan<'_> {
                 one_ray,
                 share,
                 resume_at,
+                positions: (position_seed, points),
             } => {
                 let part = share.of(counts[i]);
                 let first = part.start.max(resume_at.get(i).copied().unwrap_or(0));
@@ -678,10 +691,12 @@ impl SamplePlan<'_> {
                     range: first.min(part.end)..part.end,
                     seed: *seed,
                     fixed_light: one_ray[i],
-                    // Where the pilot sample stays, it was point 0.
                     position: PositionPlan {
-                        seed: *seed,
-                        first: u32::from(one_ray[i]),
+                        seed: *position_seed,
+                        first: match points {
+                            FirstPoints::AfterPilot => u32::from(one_ray[i]),
+                            FirstPoints::Listed(first) => first[i],
+                        },
                     },
                 }
             }
@@ -1265,6 +1280,7 @@ mod tests {
                 spp: 8,
             },
             resume_at: &[],
+            positions: (options.seed, FirstPoints::AfterPilot),
         };
         let (near, far) = (plan.pixel(0), plan.pixel(1));
         assert_eq!((near.range, near.position), (0..6, at(77, 0)));
