@@ -1203,6 +1203,10 @@ fn pass_integrators<'s>(
         own = own.with_photons(p.maps);
         fixed = fixed.with_photons(p.maps);
     }
+    // A per-pixel plan shades only its one-ray pixels with the fixed integrator.
+    if matches!(plan, SamplePlan::PerPixel { .. }) {
+        fixed = fixed.one_ray();
+    }
     (own, fixed)
 }
 

@@ -366,7 +366,7 @@ impl Integrator<'_> {
             filter
         };
         let pov = self.area_lights == AreaLightMode::Pov;
-        if area.adaptive.is_some() && pov {
+        if area.adaptive.is_some() && pov && !self.one_ray {
             // POV-Ray's adaptive rule depends on what the corners see, so it is evaluated
             // as POV-Ray does, with jitter drawn from this sample.
             sampler.set_dimension(dim);
