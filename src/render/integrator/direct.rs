@@ -16,6 +16,13 @@ use crate::render::prepared::{Material, PreparedScene};
 use crate::render::sampler::{PixelSampler, permute};
 use crate::scene::{Colour, Finish, LightGroup};
 
+/// The largest area_illumination grid a one-ray pixel shades whole. Measured, adaptive,
+/// squared error times time against shading a few points spread over the grid: 7 x 3
+/// (scenes/area_illumination.pov, 640x480, against POV-Ray) 6-11% lower at 4, 8 and 16
+/// spp; 9 x 9 (the same scene, 320x240, against a 256-spp render) 8% and 22% lower at 4
+/// and 16 spp. Larger grids cost in proportion and were not measured.
+const WHOLE_GRID_POINTS: u32 = 81;
+
 use super::interiors::InteriorStack;
 use super::optics::{caustic_factor, fade};
 use super::{Integrator, RayCounts, Shading};
@@ -210,22 +217,34 @@ impl Integrator<'_> {
         let s2 = sampler.get_2d();
         let mut jitter = sampler.free_stream(dim);
         let frame = area.frame(light.location, light.location - p);
-        let points = area.shaded_points();
+        // Where one shadow ray is exact (a one-ray pixel), a small grid is shaded whole:
+        // what is left of the sample's noise is then its position in the pixel.
+        let whole = self.one_ray && area.size1 * area.size2 <= WHOLE_GRID_POINTS;
+        let points = if whole {
+            area.size1 * area.size2
+        } else {
+            area.shaded_points()
+        };
         // The shading of the points lighting the front, and of those lighting the back,
         // with the incidence of one of them (the side shadow rays start from).
         let mut sides = [(DVec3::ZERO, None); 2];
-        for k in area.spread_points(points, s2) {
+        let mut shade = |k: u32| {
             let at = area.point_at(&frame, k, (jitter.next_f64(), jitter.next_f64()));
             let Some(incidence) = light.incidence_from(p, at) else {
-                continue;
+                return;
             };
             let Some(facing) = facing(s, incidence.l, back_lit) else {
-                continue;
+                return;
             };
             let colour = light.colour * incidence.factor;
             let side = &mut sides[usize::from(facing.flipped)];
             side.0 += self.light_on_layer(s, layer, index, &facing.at, colour);
             side.1 = Some(incidence);
+        };
+        if whole {
+            (0..points).for_each(&mut shade);
+        } else {
+            area.spread_points(points, s2).for_each(&mut shade);
         }
         // The centre's light, which POV-Ray's adaptive rule compares.
         let centre = light

@@ -1005,6 +1005,43 @@ mod tests {
         assert!(one.x > 0.1, "lit: {one}");
     }
 
+    /// A one-ray pixel shades a small area_illumination grid whole: every sample sees the
+    /// grid's average, where a sample elsewhere shades a few points spread over it.
+    #[test]
+    fn one_ray_pixels_shade_a_small_grid_whole() {
+        let src = "plane { y, 0 pigment { rgb 0.8 } finish { phong 0.6 } }
+            light_source { <0, 2, 0> rgb 1 area_light <6, 0, 0>, <0, 0, 2>, 7, 3
+                area_illumination on }";
+        let loaded = crate::lang::load_scene_source("t.pov", src, &Default::default());
+        let scene = PreparedScene::new(&loaded.expect("scene loads").scene);
+        let options = RenderOptions {
+            light_samples: LightSamples::Fixed(1),
+            ..RenderOptions::default()
+        };
+        let ray = Ray::new(DVec3::new(0.3, 2.0, -3.0), DVec3::new(0.0, -2.0, 3.0));
+        let shade = |integrator: &Integrator, index: u32| {
+            let mut sampler = PixelSampler::new(8);
+            sampler.start(1, 2, index, 9);
+            integrator.radiance(&ray, &mut sampler, &mut RayCounts::default())
+        };
+        let (spread, whole) = (
+            Integrator::new(&scene, &options),
+            Integrator::new(&scene, &options).one_ray(),
+        );
+        let first = shade(&whole, 0);
+        for index in 1..8 {
+            assert_eq!(shade(&whole, index), first, "sample {index}");
+        }
+        let spread: Vec<DVec3> = (0..8).map(|i| shade(&spread, i)).collect();
+        assert!(spread.iter().any(|&c| c != spread[0]), "{spread:?}");
+        // The spread samples average to the grid's whole shading.
+        let mean = spread.iter().sum::<DVec3>() / 8.0;
+        assert!(
+            (mean - first).abs().max_element() < 0.1 * first.max_element(),
+            "{mean} {first}"
+        );
+    }
+
     #[test]
     fn dimensions_depend_on_the_lights_not_the_objects() {
         let scene = |spheres: usize, lights: usize| {
