@@ -450,7 +450,10 @@ fn adaptive_passes(
             one_ray: &one_ray,
             share: Share { range, ..share },
             resume_at: &resume_at,
-            positions: (options.seed, FirstPoints::AfterPilot),
+            positions: Positions {
+                seed: options.seed,
+                first: FirstPoints::AfterPilot,
+            },
         };
         let more = run(&plan, progress, Some(film));
         rays.add(&more.rays);
@@ -578,16 +581,22 @@ enum SamplePlan<'a> {
     /// Adaptive sampling: pixel i has counts[i] samples (all of its own strata; none
     /// where the count is 0) and takes those of its `share` from `resume_at[i]` on (a
     /// checkpoint holds those before; empty: none), with one shadow ray per light per
-    /// sample where one_ray[i]. Their positions come from the sequences of the seed
-    /// `positions.0`, from the points `positions.1` says on.
+    /// sample where one_ray[i], their positions as `positions` says.
     PerPixel {
         counts: &'a [u32],
         seed: u64,
         one_ray: &'a [bool],
         share: Share,
         resume_at: &'a [u32],
-        positions: (u64, FirstPoints<'a>),
+        positions: Positions<'a>,
     },
+}
+
+/// Where a per-pixel plan's samples take their positions: the sequences of `seed`, each
+/// pixel's from the point `first` says on.
+struct Positions<'a> {
+    seed: u64,
+    first: FirstPoints<'a>,
 }
 
 /// Where a per-pixel plan's sample 0 of each pixel takes its position: after the points
@@ -682,7 +691,7 @@ impl SamplePlan<'_> {
                 one_ray,
                 share,
                 resume_at,
-                positions: (position_seed, points),
+                positions,
             } => {
                 let part = share.of(counts[i]);
                 let first = part.start.max(resume_at.get(i).copied().unwrap_or(0));
@@ -692,8 +701,8 @@ impl SamplePlan<'_> {
                     seed: *seed,
                     fixed_light: one_ray[i],
                     position: PositionPlan {
-                        seed: *position_seed,
-                        first: match points {
+                        seed: positions.seed,
+                        first: match positions.first {
                             FirstPoints::AfterPilot => u32::from(one_ray[i]),
                             FirstPoints::Listed(first) => first[i],
                         },
@@ -1284,7 +1293,10 @@ mod tests {
                 spp: 8,
             },
             resume_at: &[],
-            positions: (options.seed, FirstPoints::AfterPilot),
+            positions: Positions {
+                seed: options.seed,
+                first: FirstPoints::AfterPilot,
+            },
         };
         let (near, far) = (plan.pixel(0), plan.pixel(1));
         assert_eq!((near.range, near.position), (0..6, at(77, 0)));

@@ -6,9 +6,8 @@
 //! stratum or point chosen by a permutation of the indices drawn independently per pixel
 //! and dimension (except the pixel position, whose points go in order, so that a pixel's
 //! later samples continue the strata of its first), and the jitter and scrambling come
-//! from hashes. So any range of sample
-//! indices can be rendered alone, on any machine and in any order, and the parts sum to
-//! exactly the full render.
+//! from hashes. So any range of sample indices can be rendered alone, on any machine and
+//! in any order, and the parts sum to exactly the full render.
 
 use rand::Rng;
 use rand_pcg::Pcg32;

@@ -17,7 +17,8 @@
 //! drew positions of its own).
 
 use super::{
-    Film, FirstPoints, Pass, Progress, RayCounts, RenderOptions, SamplePlan, Share, neighbour_noise,
+    Film, FirstPoints, Pass, Positions, Progress, RayCounts, RenderOptions, SamplePlan, Share,
+    neighbour_noise,
 };
 
 /// What `--target-error` asks for.
@@ -127,7 +128,10 @@ pub(super) fn render_to_error(
             resume_at: &[],
             // Each pass's positions continue the pixel's sequence where the passes before
             // stopped: all of its samples are one stratified set.
-            positions: (first_seed, FirstPoints::Listed(&taken)),
+            positions: Positions {
+                seed: first_seed,
+                first: FirstPoints::Listed(&taken),
+            },
         };
         let more = run(&plan, progress, Some(film));
         film = more.film;
