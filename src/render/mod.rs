@@ -339,9 +339,18 @@ fn doubling(range: Range<u32>) -> Vec<Range<u32>> {
     passes
 }
 
-/// Shadow rays per area light of each adaptive pilot sample: spread over the light, so
-/// that a pixel whose light is partly hidden shows it in its own rays more often than not.
-const PILOT_LIGHT_RAYS: u32 = 4;
+/// Shadow rays per area light of each adaptive pilot sample of a render of `spp` samples
+/// per pixel: spread over the light, so that a pixel whose light is partly hidden shows it
+/// in its own rays more often than not. Four, up to eight from 8 spp on: more make the
+/// pilot's values in a penumbra less noisy, so the change around each pixel says more of
+/// where the error is, which repays their cost once the budget is large. Measured at
+/// 640x480, adaptive, 3 seeds: squared error x time with 8 rays, lower than with 4 by,
+/// at 4 / 8 / 16 / 32 spp: soft_shadow -2 / 17 / 21 / 14%, area_grid_6x2 -23 / -1 / 2 /
+/// 11%, area_circular_9x9 12 / 30 / 27 / 25%, area_illumination -4 / -4 / 1 / 1%,
+/// area_adaptive 1% (its adaptive rule sends the pilot's rays).
+fn pilot_light_rays(spp: u32) -> u32 {
+    spp.clamp(4, 8)
+}
 
 /// How far (in pixels) around a pixel the pilot looks for a penumbra. One pixel's few shadow
 /// rays can all agree where a penumbra is all the same, only faint: at its fringe, where
@@ -383,7 +392,7 @@ impl PixelWork {
 }
 
 /// Adaptive sampling in two passes. A pilot of one sample per pixel, with
-/// [`PILOT_LIGHT_RAYS`] shadow rays per area light, shows where the image changes (edges,
+/// [`pilot_light_rays`] shadow rays per area light, shows where the image changes (edges,
 /// textures, noise), what a sample costs and where the penumbrae are. Everything it decides for a pixel is read from the pixel's
 /// neighbours, not from the pixel itself, so the pixel's own pilot sample is independent of
 /// its decisions and may stay in its mean without bias (a pixel's own value deciding how
@@ -533,7 +542,7 @@ fn pilot_plan(options: &RenderOptions) -> SamplePlan<'static> {
         // But its position is the render's own: point 0 of the sequence whose next
         // points the pixel's later samples take where the pilot sample stays.
         position_seed: options.seed,
-        fixed_light: Some(PILOT_LIGHT_RAYS),
+        fixed_light: Some(pilot_light_rays(options.samples_per_pixel)),
     }
 }
 
@@ -614,7 +623,7 @@ struct PixelPlan {
     range: Range<u32>,
     seed: u64,
     /// Shade with the pass's fixed-count integrator (one shadow ray per area light, or the
-    /// pilot's [`PILOT_LIGHT_RAYS`]) instead of the render's own light sampling.
+    /// pilot's [`pilot_light_rays`]) instead of the render's own light sampling.
     fixed_light: bool,
     position: PositionPlan,
 }
