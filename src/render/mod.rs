@@ -37,8 +37,8 @@ const TILE: usize = 16;
 /// Whether a render of `spp` samples per pixel spreads them adaptively unless told
 /// otherwise. Measured at 640x480 on the twelve scenes of docs/convergence.md (2 seeds, one
 /// thread; squared error times time, uniform over adaptive): from 2 spp on, adaptive is the
-/// more efficient on every scene (1.07x to 52x); at 1 spp it is the less efficient on 7 of
-/// the 12 (0.67x to 0.96x), its pilot then being most of the budget.
+/// more efficient on every scene (1.07x to 51x); at 1 spp it is the less efficient on 7 of
+/// the 12 (0.68x to 0.96x), its pilot then being most of the budget.
 pub fn adaptive_by_default(spp: u32) -> bool {
     spp >= 2
 }
