@@ -355,7 +355,10 @@ fn pilot_light_rays(spp: u32) -> u32 {
 /// How far (in pixels) around a pixel the pilot looks for a penumbra. One pixel's few shadow
 /// rays can all agree where a penumbra is all the same, only faint: at its fringe, where
 /// little of the light is hidden. It is seldom that nothing within this reach shows it.
-const PENUMBRA_REACH: usize = 3;
+/// Measured at 640x480, adaptive, 3 seeds, RMSE against 3 pixels: at 4 spp soft_shadow
+/// 0.00138 -> 0.00126 and the 9x9 light 0.00116 -> 0.00105 for the same time, at 2 spp
+/// 2-4% lower, from 8 spp on the same (5 pixels: as 4).
+const PENUMBRA_REACH: usize = 4;
 
 /// A render pass, as `render` runs it on its thread pool.
 /// A pass over the image: its plan, and the film it adds its samples to (a new one when
