@@ -665,14 +665,18 @@ pub fn plane_hit(ray: &Ray, normal: DVec3, distance: f64, t_max: f64) -> Option<
 }
 
 /// A sphere's first crossing in (0, t_max), for callers that test spheres before any
-/// general dispatch (most items in a scene of many objects are spheres).
+/// general dispatch (most items in a scene of many objects are spheres). The roots are
+/// those of [`sphere_roots`], read in place rather than through a [`Roots`] list.
 #[inline(always)]
 pub fn sphere_first_hit(ray: &Ray, center: DVec3, radius: f64, t_max: f64) -> Option<f64> {
-    sphere_roots_ahead(ray, center, radius, true)
-        .as_slice()
-        .iter()
-        .find(|&&t| t > 0.0 && t < t_max)
-        .copied()
+    let (q, a, c) = sphere_q(ray, center, radius, true)?;
+    let [near, far, ..] = pair_from_q(q, a, c).values;
+    let ahead = |t: f64| t > 0.0 && t < t_max;
+    if ahead(near) {
+        Some(near)
+    } else {
+        ahead(far).then_some(far)
+    }
 }
 
 /// Both roots of the ray-sphere quadratic, ordered, computed without catastrophic
@@ -680,18 +684,18 @@ pub fn sphere_first_hit(ray: &Ray, center: DVec3, radius: f64, t_max: f64) -> Op
 /// second root from the product of roots (q = -(b + sign(b) sqrt(disc)), t0 = q/a, t1 = c/q).
 #[inline(always)]
 fn sphere_roots(ray: &Ray, center: DVec3, radius: f64) -> Roots {
-    sphere_roots_ahead(ray, center, radius, false)
+    sphere_q(ray, center, radius, false).map_or(Roots::default(), |(q, a, c)| pair_from_q(q, a, c))
 }
 
-/// `sphere_roots`; with `ahead_only`, none where both are <= 0 and found cheaply so.
+/// The quadratic's q, a and c (roots q/a and c/q), or none where the ray misses the sphere;
+/// with `ahead_only`, none too where both roots are <= 0 and found cheaply so.
 #[inline(always)]
-fn sphere_roots_ahead(ray: &Ray, center: DVec3, radius: f64, ahead_only: bool) -> Roots {
-    let none = Roots::default();
+fn sphere_q(ray: &Ray, center: DVec3, radius: f64, ahead_only: bool) -> Option<(f64, f64, f64)> {
     let d = ray.direction;
     let oc = ray.origin - center;
     let a = d.dot(d);
     if a == 0.0 {
-        return none;
+        return None;
     }
     let b = oc.dot(d); // half of the usual b
     let c = oc.dot(oc) - radius * radius;
@@ -699,7 +703,7 @@ fn sphere_roots_ahead(ray: &Ray, center: DVec3, radius: f64, ahead_only: bool) -
     // and where it is below zero by far more than its rounding error (a few ulps of
     // a (|oc|^2 + r^2)), the careful form below is negative as well.
     if b * b - a * c < -1e-9 * a * (oc.dot(oc) + radius * radius) {
-        return none;
+        return None;
     }
     // A ray that starts on or outside the sphere (c >= 0) and heads away from its centre
     // (b >= 0) meets it at no t > 0: the roots' product c/a is not negative and their sum
@@ -707,15 +711,15 @@ fn sphere_roots_ahead(ray: &Ray, center: DVec3, radius: f64, ahead_only: bool) -
     // roots are q/a and c/q with q <= 0), only later: a shadow ray leaving the sphere it
     // starts on took its division and square root every time.
     if ahead_only && b.is_sign_positive() && c >= 0.0 {
-        return none;
+        return None;
     }
     let perp = oc - d * (b / a);
     let disc = a * (radius * radius - perp.dot(perp));
     if disc < 0.0 {
-        return none;
+        return None;
     }
     // b here is half the usual coefficient, so q carries no factor 1/2.
-    pair_from_q(-(b + b.signum() * disc.sqrt()), a, c)
+    Some((-(b + b.signum() * disc.sqrt()), a, c))
 }
 
 fn cone_hits(ray: &Ray, r0: f64, r1: f64, open: bool) -> Roots {

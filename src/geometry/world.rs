@@ -613,11 +613,11 @@ impl World {
         // and a plane, the commonest (every shadow ray tests a scene's floor), skip the
         // shapes' dispatch and its call (reflection: 44 instructions a plane test, 19 of
         // them the call's).
-        let (t, part) = match (p.shape, p.transform) {
-            (ShapeKind::Sphere { center, radius }, NO_TRANSFORM) => {
+        let (t, part) = match (&p.shape, p.transform) {
+            (&ShapeKind::Sphere { center, radius }, NO_TRANSFORM) => {
                 (sphere_first_hit(ray, center, radius, t_max)?, 0)
             }
-            (ShapeKind::Plane { normal, distance }, NO_TRANSFORM) => {
+            (&ShapeKind::Plane { normal, distance }, NO_TRANSFORM) => {
                 (plane_hit(ray, normal, distance, t_max)?, 0)
             }
             (shape, NO_TRANSFORM) => shape.intersect_part(ray, t_max, &self.tables)?,
@@ -868,20 +868,18 @@ impl World {
             t_best
         };
         let mut nearest: Option<u32> = None;
+        // Once a bounded item is met, one at the very same distance is a tie, settled by
+        // the scene's order rather than by the order the tree visits them: items are asked
+        // for hits up to just past the nearest one (kept here, not recomputed per item).
+        let mut reach = t_bounded;
         self.bvh.traverse(ray, t_bounded, |i, t_cur| {
-            // Once a bounded item is met, one at the very same distance is a tie, settled
-            // by the scene's order rather than by the order the tree visits them.
-            let reach = if nearest.is_some() {
-                t_cur.next_up()
-            } else {
-                t_cur
-            };
             match self.item_hit(i, ray, reach, skip) {
                 Some(hit)
                     if hit.t < t_cur || nearest.is_some_and(|n| self.declared_before(i, n)) =>
                 {
                     best = Some(hit);
                     nearest = Some(i);
+                    reach = hit.t.next_up();
                     Some(hit.t)
                 }
                 _ => Some(t_cur),
