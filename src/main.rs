@@ -82,9 +82,9 @@ struct RenderArgs {
     width: u32,
     #[arg(long, default_value_t = 240)]
     height: u32,
-    /// Samples per pixel.
-    #[arg(long, default_value_t = 16)]
-    spp: u32,
+    /// Samples per pixel; a fractional N (e.g. 1.5) is an adaptive render's average.
+    #[arg(long, default_value_t = 16.0)]
+    spp: f64,
     #[arg(long, default_value_t = 0)]
     seed: u64,
     /// Worker threads (default: one per core). The image does not depend on it.
@@ -337,9 +337,9 @@ struct ConvergeArgs {
     /// A reference written by `penumbra reference` (fixes the image size).
     #[arg(long)]
     reference: PathBuf,
-    /// Samples per pixel, comma-separated.
+    /// Samples per pixel, comma-separated (fractional counts, adaptive only, are averages).
     #[arg(long, value_delimiter = ',', default_value = "1,4,16,64,256")]
-    spp: Vec<u32>,
+    spp: Vec<f64>,
     /// Replicates (seeds) per sample count, at least 2.
     #[arg(long, default_value_t = 4)]
     seeds: u32,
@@ -662,7 +662,11 @@ fn sampling_summary(job: &Job, settings: &JobSettings, r: &FrameReport) -> Strin
     } else {
         ""
     };
-    format!("{} spp{adaptive}", job.sampling.spp)
+    let spp = job
+        .sampling
+        .average
+        .map_or(job.sampling.spp.to_string(), |a| a.to_string());
+    format!("{spp} spp{adaptive}")
 }
 
 impl RenderArgs {

@@ -199,6 +199,7 @@ fn job_options(job: &Job, settings: &JobSettings) -> RenderOptions {
         width: job.width as usize,
         height: job.height as usize,
         samples_per_pixel: job.sampling.spp,
+        average_spp: job.sampling.average,
         adaptive: job.sampling.adaptive,
         seed: job.seed,
         threads: job.threads,
@@ -328,7 +329,7 @@ impl FrameRenderer<'_> {
             spp,
             seed: o.seed,
             options: format!(
-                "quality {} area-lights {:?} splitting {:?} light-samples {:?} roulette {} stratified {} window {:?} adaptive {} motion-blur {}",
+                "quality {} area-lights {:?} splitting {:?} light-samples {:?} roulette {} stratified {} window {:?} adaptive {} average-spp {:?} motion-blur {}",
                 o.quality,
                 o.area_lights,
                 o.splitting,
@@ -337,6 +338,7 @@ impl FrameRenderer<'_> {
                 o.stratified,
                 o.window,
                 o.adaptive,
+                o.average_spp,
                 self.job.motion_blur
             ),
             range: o.sample_range.clone().unwrap_or(0..spp),

@@ -406,3 +406,62 @@ fn povray_switches_interrupt_and_continue_with_plus_c() {
     ok(povray_style(&["+C"]).output().expect("runs"));
     assert_eq!(std::fs::read(&out).unwrap(), std::fs::read(&whole).unwrap());
 }
+
+/// `--spp 1.5` is an adaptive render's average: more samples than one per pixel and fewer
+/// than two (each pixel's share is rounded, so not exactly 1.5), an image of its own,
+/// shards that merge into it byte for byte, and a clear refusal where sampling is uniform.
+#[test]
+fn a_fractional_spp_is_an_adaptive_average() {
+    let temp = TempDir::new("farm-fractional").expect("temp dir");
+    let dir = temp.path();
+    let render = |spp: &str, extra: &[&str], out: &Path| {
+        penumbra()
+            .args(["render", &scene("checker.pov"), "--width", "64"])
+            .args(["--height", "48", "--spp", spp, "--seed", "3"])
+            .args(extra)
+            .arg("-o")
+            .arg(out)
+            .output()
+            .expect("runs")
+    };
+    // The image and the summary's sample count.
+    let image = |spp: &str| {
+        let out = dir.join(format!("spp{spp}.exr"));
+        let run = ok(render(spp, &[], &out));
+        let summary = String::from_utf8_lossy(&run.stderr).to_string();
+        let samples: u64 = summary
+            .split(", ")
+            .find_map(|part| part.strip_suffix(" samples")?.parse().ok())
+            .unwrap_or_else(|| panic!("no sample count in: {summary}"));
+        (std::fs::read(&out).expect("written"), samples, summary)
+    };
+    let pixels = 64 * 48;
+    let (one, half, two) = (image("1"), image("1.5"), image("2"));
+    assert!(half.2.contains("1.5 spp adaptive"), "{}", half.2);
+    assert_eq!(one.1, pixels);
+    assert!(
+        half.1 > pixels && half.1 < two.1,
+        "{} against {}",
+        half.1,
+        two.1
+    );
+    assert!(half.0 != one.0 && half.0 != two.0);
+    // Shards of the average merge into its render.
+    let parts: Vec<PathBuf> = ["0..1", "1..2"]
+        .iter()
+        .map(|range| {
+            let path = dir.join(format!("half-{}.pshard", &range[..1]));
+            ok(render("1.5", &["--sample-range", range], &path));
+            path
+        })
+        .collect();
+    let merged = dir.join("merged.exr");
+    ok(merge(&parts, &merged));
+    assert_eq!(std::fs::read(&merged).expect("merged"), half.0);
+    // Uniform sampling takes whole samples.
+    let refused = dir.join("uniform.exr");
+    let run = render("1.5", &["--uniform"], &refused);
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert!(!run.status.success() && err.contains("average"), "{err}");
+    assert!(!refused.exists());
+}

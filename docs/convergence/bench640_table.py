@@ -24,7 +24,7 @@ def read(path):
         for row in csv.DictReader(f):
             point = (float(row["seconds"]), float(row["rmse"]))
             if row["method"] == "penumbra":
-                pen.append((int(row["spp"]), point))
+                pen.append((float(row["spp"]), point))
             else:
                 pov.append((row["setting"], point))
     pen.sort()

@@ -8,10 +8,27 @@ use crate::lang::AnimationClock;
 use crate::render::{PixelWindow, adaptive_by_default};
 
 /// Samples per pixel and whether a pilot pass spreads them where the noise is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sampling {
+    /// Each pixel's count (uniform), or the largest whole count an adaptive render's
+    /// budget rounds up to.
     pub spp: u32,
+    /// An adaptive render's fractional average (`--spp 1.5`), else none.
+    pub average: Option<f64>,
     pub adaptive: bool,
+}
+
+impl Sampling {
+    /// `--spp N`: N samples per pixel, adaptive by default from 2 on; a fractional N is an
+    /// average, which only adaptive sampling can spend.
+    fn of(spp: f64) -> Sampling {
+        let whole = spp.ceil() as u32;
+        Sampling {
+            spp: whole,
+            average: (spp.fract() != 0.0).then_some(spp),
+            adaptive: adaptive_by_default(whole),
+        }
+    }
 }
 
 /// The sampling penumbra uses for POV-Ray's anti-aliasing options, chosen so that its RMSE
@@ -22,10 +39,7 @@ pub struct Sampling {
 /// adaptive sampling, at least 16, and twice as many per halving of the threshold below 0.3.
 pub fn sampling_for(aa: &Antialias) -> Sampling {
     if !aa.on {
-        return Sampling {
-            spp: 16,
-            adaptive: adaptive_by_default(16),
-        };
+        return Sampling::of(16.0);
     }
     let depth = aa.depth.clamp(1, 6);
     let rays = if aa.method >= 2 {
@@ -45,6 +59,7 @@ pub fn sampling_for(aa: &Antialias) -> Sampling {
     }
     Sampling {
         spp: spp.min(4096),
+        average: None,
         adaptive: true,
     }
 }
@@ -92,10 +107,7 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
     let window = pixel_window(settings)?;
     let frames = frames(settings, &scene)?;
     let mut sampling = match settings.spp {
-        Some(spp) => Sampling {
-            spp,
-            adaptive: adaptive_by_default(spp),
-        },
+        Some(spp) => Sampling::of(spp),
         None => sampling_for(&settings.antialias),
     };
     // Each time of a motion-blurred frame is its own render, whose pilot would spread its
@@ -103,6 +115,11 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
     sampling.adaptive = settings
         .adaptive
         .unwrap_or(sampling.adaptive && settings.motion_blur <= 1);
+    if let (Some(average), false) = (sampling.average, sampling.adaptive) {
+        return Err(format!(
+            "--spp {average} is an average, which needs adaptive sampling (uniform renders and motion blur take whole samples per pixel)"
+        ));
+    }
     Ok(Job {
         scene,
         width: settings.width,

@@ -103,8 +103,9 @@ pub struct PovSettings {
     pub window: WindowBounds,
     pub animation: Animation,
     pub crop: bool,
-    /// `--spp N`: overrides the anti-aliasing mapping.
-    pub spp: Option<u32>,
+    /// `--spp N`: overrides the anti-aliasing mapping; a fractional N is an adaptive
+    /// render's average.
+    pub spp: Option<f64>,
     pub seed: u64,
     pub quiet: bool,
     /// `--allow-write DIR`.
@@ -443,7 +444,7 @@ impl Reader<'_> {
                 s.animation.initial_frame = integer(a)?;
                 s.animation.final_frame = integer(b)?;
             }
-            Setting::Spp => s.spp = Some(whole(value, 1..=1 << 20)?),
+            Setting::Spp => s.spp = Some(samples(value)?),
             Setting::Seed => s.seed = value.trim().parse().map_err(|_| not_number(value))?,
             Setting::Quiet => s.quiet = true,
             Setting::AllowWrite => s.allow_write = Some(PathBuf::from(value.trim())),
@@ -587,6 +588,15 @@ fn whole(value: &str, range: std::ops::RangeInclusive<u32>) -> Result<u32, Strin
         ));
     }
     Ok(x as u32)
+}
+
+/// Samples per pixel: whole, or an adaptive render's fractional average, from 1 to 2^20.
+fn samples(value: &str) -> Result<f64, String> {
+    let x = number(value)?;
+    if !(1.0..=f64::from(1u32 << 20)).contains(&x) {
+        return Err(format!("{x} is outside 1..=1048576"));
+    }
+    Ok(x)
 }
 
 fn positive(value: &str) -> Result<u32, String> {

@@ -785,7 +785,7 @@ pub const OPTIONS: &[PovOption] = &[
     own(
         "spp",
         Spp,
-        "`--spp N`: samples per pixel, instead of what the anti-aliasing options give",
+        "`--spp N`: samples per pixel, instead of what the anti-aliasing options give (a fractional N: an adaptive render's average)",
     ),
     own("seed", Seed, "`--seed N`: the sampler's seed"),
     own("quiet", Quiet, "no progress bar, no notes, no summary"),

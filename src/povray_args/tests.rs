@@ -193,9 +193,25 @@ fn looks_like_povray_recognises_invocations() {
 #[test]
 fn penumbras_own_options_mix_with_switches() {
     let s = read("scene.pov +SF1 +EF1 --spp 64 --seed 101 --quiet --allow-write out/").unwrap();
-    assert_eq!((s.spp, s.seed, s.quiet), (Some(64), 101, true));
+    assert_eq!((s.spp, s.seed, s.quiet), (Some(64.0), 101, true));
     assert_eq!(s.allow_write, Some(PathBuf::from("out/")));
     assert_eq!(read("scene.pov").unwrap().allow_write, None);
+}
+
+/// `--spp 1.5` is an adaptive render's average, sampled adaptively by default; uniform
+/// sampling refuses it, and counts below one sample are refused as they are read.
+#[test]
+fn a_fractional_spp_is_an_adaptive_average() {
+    let sampling = |line: &str| job::job(&read(line).unwrap()).map(|j| j.sampling);
+    let half = sampling("scene.pov --spp 1.5").unwrap();
+    assert_eq!(
+        (half.spp, half.average, half.adaptive),
+        (2, Some(1.5), true)
+    );
+    let whole = sampling("scene.pov --spp 2").unwrap();
+    assert_eq!((whole.spp, whole.average), (2, None));
+    assert!(sampling("scene.pov --spp 1.5 --uniform").is_err());
+    assert!(read("scene.pov --spp 0.5").is_err());
 }
 
 #[test]

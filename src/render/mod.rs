@@ -77,6 +77,12 @@ pub struct RenderOptions {
     pub passes: bool,
     /// Render in passes until the estimated noise is below this (see [`target`]).
     pub target_error: Option<target::TargetError>,
+    /// An adaptive render's average samples per pixel where it is not whole, above 1
+    /// (`--spp 1.5`): `samples_per_pixel` is then its ceiling, which sizes the pilot's
+    /// shadow rays and the sample ranges of shards. Between one sample per pixel and two,
+    /// where each whole step doubles the time, the first extra samples go to the pixels
+    /// that change most (docs/convergence.md).
+    pub average_spp: Option<f64>,
 }
 
 /// A rectangle of pixels: columns `x`, rows `y` (row 0 at the top).
@@ -111,6 +117,7 @@ impl Default for RenderOptions {
             quality: 9,
             passes: false,
             target_error: None,
+            average_spp: None,
         }
     }
 }
@@ -249,7 +256,26 @@ fn sample_range(options: &RenderOptions) -> Result<Range<u32>, RenderError> {
             "--target-error cannot be split into sample ranges".into(),
         ));
     }
+    if let Some(average) = options.average_spp {
+        check_average(average, spp, options.adaptive)?;
+    }
     Ok(range)
+}
+
+/// A fractional average is for adaptive renders, whose counts differ per pixel anyway, and
+/// lies in (spp - 1, spp], above one sample (every pixel takes the pilot's).
+fn check_average(average: f64, spp: u32, adaptive: bool) -> Result<(), RenderError> {
+    if !adaptive {
+        return Err(RenderError(format!(
+            "{average} samples per pixel on average needs adaptive sampling (uniform renders take whole samples)"
+        )));
+    }
+    if !(average > 1.0 && average <= f64::from(spp) && average > f64::from(spp) - 1.0) {
+        return Err(RenderError(format!(
+            "an average of {average} samples per pixel must be above 1 and round up to {spp}"
+        )));
+    }
+    Ok(())
 }
 
 fn check_checkpoint(options: &RenderOptions, done: &Film) -> Result<(), RenderError> {
@@ -433,7 +459,10 @@ fn adaptive_passes(
     // The pilot samples that stay are this render's (or its checkpoint's) when it starts at 0.
     let first_shard = share.range.start == 0;
     let holds_pilot = |i: usize| first_shard && pixels[i].one_ray && shown(i);
-    let counts = allocate(&pixels, share.spp);
+    let average = options
+        .average_spp
+        .unwrap_or(f64::from(options.samples_per_pixel.max(1)));
+    let counts = allocate(&pixels, average);
     let one_ray: Vec<bool> = pixels.iter().map(|p| p.one_ray).collect();
     let resume_at = checkpoint.map_or_else(Vec::new, |c| {
         let held = |i: usize| c.pixels[i].count.saturating_sub(u32::from(holds_pilot(i)));
@@ -847,14 +876,15 @@ struct AdaptivePixel {
 /// (area_grid_6x2 at 16 spp: 3.3% of the pixels hold 99% of the squared error), and
 /// giving every such pixel `spp` spent most of their time on the smooth parts between
 /// (with the share, area_grid_6x2's RMSE at 16 spp fell from 0.00156 to 0.00060).
-fn allocate(pixels: &[AdaptivePixel], spp: u32) -> Vec<u32> {
+fn allocate(pixels: &[AdaptivePixel], average: f64) -> Vec<u32> {
+    let spp = average.ceil() as u32;
     let least = (spp / 4).min(spp - 1);
     // Near a penumbra the pilot is left out: at least one sample of the pixel's own.
     let floor = |p: &AdaptivePixel| if p.one_ray { least } else { least.max(1) };
-    let full = |p: &AdaptivePixel| if p.one_ray { spp - 1 } else { spp };
+    let full = |p: &AdaptivePixel| if p.one_ray { average - 1.0 } else { average };
     let time: f64 = pixels
         .iter()
-        .map(|p| p.cost * f64::from(full(p) - floor(p)))
+        .map(|p| p.cost * (full(p) - f64::from(floor(p))))
         .sum();
     let weight = |p: &AdaptivePixel| p.change / p.cost.sqrt();
     let spent: f64 = pixels.iter().map(|p| weight(p) * p.cost).sum();
@@ -864,7 +894,8 @@ fn allocate(pixels: &[AdaptivePixel], spp: u32) -> Vec<u32> {
             if spent > 0.0 {
                 floor(p) + (time * weight(p) / spent).round() as u32
             } else {
-                full(p)
+                // No change anywhere: the whole count (a fractional average's floor).
+                full(p) as u32
             }
         })
         .collect()
@@ -1329,7 +1360,7 @@ mod tests {
             pixel(1.0, 8.0, true),
             pixel(5.0, 2.0, false),
         ];
-        let counts = allocate(&pixels, 13);
+        let counts = allocate(&pixels, 13.0);
         // Each takes a quarter of the budget (3), and they share the time of the rest at
         // their costs: 9 more each for the one-ray pixels (whose pilot sample stays), 10
         // for the one near a penumbra (whose pilot is left out), 128 in all. Shares go as
@@ -1345,8 +1376,55 @@ mod tests {
         // No change anywhere: every pixel takes the budget's count, less the pilot where
         // it stays.
         let quiet = [pixel(0.0, 1.0, true), pixel(0.0, 3.0, false)];
-        assert_eq!(allocate(&quiet, 8), vec![7, 8]);
+        assert_eq!(allocate(&quiet, 8.0), vec![7, 8]);
         // One sample: a pixel near a penumbra still takes one of its own.
-        assert_eq!(allocate(&pixels, 1), vec![0, 0, 0, 1]);
+        assert_eq!(allocate(&pixels, 1.0), vec![0, 0, 0, 1]);
+    }
+
+    /// A fractional average shares the time its fraction buys as a whole count does: at
+    /// 1.5 samples per pixel the four pixels' time beyond their floors (0, 0, 0 and 1) is
+    /// half a sample each, 7 in all, of which the shares 0, 1/8, 1/4 and 5/8 buy 0, 0.44,
+    /// 0.22 and 2.19 samples, rounded; each pixel's count lies between those of the whole
+    /// counts around the average.
+    #[test]
+    fn a_fractional_average_spends_its_fraction_where_the_change_is() {
+        let pixel = |change: f64, cost: f64, one_ray: bool| AdaptivePixel {
+            change,
+            cost,
+            one_ray,
+        };
+        let pixels = [
+            pixel(0.0, 2.0, true),
+            pixel(1.0, 2.0, true),
+            pixel(1.0, 8.0, true),
+            pixel(5.0, 2.0, false),
+        ];
+        let (one, half, two) = (
+            allocate(&pixels, 1.0),
+            allocate(&pixels, 1.5),
+            allocate(&pixels, 2.0),
+        );
+        assert_eq!(half, vec![0, 0, 0, 3]);
+        assert_eq!(two, vec![0, 1, 0, 5]);
+        for i in 0..pixels.len() {
+            assert!(
+                one[i] <= half[i] && half[i] <= two[i],
+                "{one:?} {half:?} {two:?}"
+            );
+        }
+        // 2.5: floors 0 (a quarter of 3, rounded down) and 1 near the penumbra; 1.5 more
+        // a pixel, 21 in all: 1.31, 0.66 and 6.56 samples.
+        assert_eq!(allocate(&pixels, 2.5), vec![0, 1, 1, 8]);
+    }
+
+    /// An average that is not whole is for adaptive renders, above 1, rounding up to the
+    /// render's `samples_per_pixel`.
+    #[test]
+    fn a_fractional_average_is_checked() {
+        assert!(check_average(1.5, 2, true).is_ok());
+        assert!(check_average(1.5, 2, false).is_err());
+        assert!(check_average(1.5, 3, true).is_err());
+        assert!(check_average(0.5, 1, true).is_err());
+        assert!(check_average(1.0, 1, true).is_err());
     }
 }

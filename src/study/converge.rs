@@ -40,7 +40,8 @@ pub struct ConvergeRequest {
     pub include_paths: Vec<PathBuf>,
     /// A reference written by `penumbra reference`; it fixes the image size.
     pub reference: PathBuf,
-    pub spp: Vec<u32>,
+    /// Samples per pixel; fractional counts (adaptive only) are averages.
+    pub spp: Vec<f64>,
     /// K, the replicates per sample count; at least 2 to split noise from bias.
     pub seeds: u32,
     pub povray: bool,
@@ -58,7 +59,7 @@ pub struct ConvergeRequest {
 /// One sample count: medians and ranges over the K seeds, and the split.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PenumbraRow {
-    pub spp: u32,
+    pub spp: f64,
     /// Wall time of one replicate: scene load (parse) plus render, median over seeds.
     pub seconds: f64,
     pub seconds_low: f64,
@@ -195,8 +196,13 @@ impl Log for () {
 
 fn validate(req: &ConvergeRequest) -> Result<(), StudyError> {
     let invalid = |m: String| Err(StudyError::InvalidRequest(m));
-    if req.spp.is_empty() || req.spp.contains(&0) {
-        return invalid("--spp needs one or more positive sample counts".into());
+    if req.spp.is_empty() || req.spp.iter().any(|&n| !(1.0..=1_048_576.0).contains(&n)) {
+        return invalid("--spp needs one or more sample counts from 1 to 1048576".into());
+    }
+    if !req.adaptive && req.spp.iter().any(|n| n.fract() != 0.0) {
+        return invalid(
+            "a fractional --spp is an adaptive render's average: add --adaptive".into(),
+        );
     }
     if req.seeds < 2 {
         return Err(StudyError::TooFewReplicates {
@@ -280,7 +286,7 @@ fn prepare<'a>(req: &'a ConvergeRequest, log: &'a dyn Log) -> Result<Study<'a>, 
 /// One row per distinct sample count, in increasing order, each appended to the CSV.
 fn measure_penumbra(study: &Study, csv: &mut Csv) -> Result<Vec<PenumbraRow>, StudyError> {
     let mut spp = study.req.spp.clone();
-    spp.sort_unstable();
+    spp.sort_by(f64::total_cmp);
     spp.dedup();
     let mut rows = Vec::new();
     for &n in &spp {
@@ -356,7 +362,7 @@ fn build_report(study: Study, rows: Vec<PenumbraRow>, povray: Vec<PovrayRow>) ->
             povray: req.povray.then(|| time_to_reach(&povray_points, target)),
         })
         .collect();
-    let noise_points: Vec<(f64, f64)> = rows.iter().map(|r| (f64::from(r.spp), r.noise)).collect();
+    let noise_points: Vec<(f64, f64)> = rows.iter().map(|r| (r.spp, r.noise)).collect();
     ConvergeReport {
         scene: study.name,
         width: study.reference.full.width,
@@ -398,7 +404,7 @@ fn load(req: &ConvergeRequest, width: usize, height: usize) -> Result<(Scene, f6
 }
 
 /// K replicates at `spp` samples per pixel, seeds `SEED_BASE + k`, folded into one row.
-fn measure_spp(study: &Study, spp: u32) -> Result<PenumbraRow, StudyError> {
+fn measure_spp(study: &Study, spp: f64) -> Result<PenumbraRow, StudyError> {
     let (req, reference) = (study.req, &study.reference);
     let mut images = Vec::new();
     let mut seconds = Vec::new();
@@ -407,7 +413,8 @@ fn measure_spp(study: &Study, spp: u32) -> Result<PenumbraRow, StudyError> {
         let options = RenderOptions {
             width: reference.full.width,
             height: reference.full.height,
-            samples_per_pixel: spp,
+            samples_per_pixel: spp.ceil() as u32,
+            average_spp: (spp.fract() != 0.0).then_some(spp),
             seed: SEED_BASE + k,
             threads: Some(study.threads),
             stratified: req.stratified,
@@ -435,7 +442,7 @@ fn measure_spp(study: &Study, spp: u32) -> Result<PenumbraRow, StudyError> {
 }
 
 fn row_from_replicates(
-    spp: u32,
+    spp: f64,
     images: &[Image],
     seconds: &[f64],
     rmse: &[f64],
@@ -687,7 +694,7 @@ fn spp_chart(report: &ConvergeReport, floors: Vec<(String, f64)>) -> ErrorChart 
             .iter()
             .map(|r| {
                 let (y, low, high) = f(r);
-                band(f64::from(r.spp), y, low, high)
+                band(r.spp, y, low, high)
             })
             .collect()
     };
@@ -740,7 +747,7 @@ pub fn summary_markdown(report: &ConvergeReport) -> String {
         },
         report.noise_slope.map_or("-".into(), |v| format!("{v:.2}")),
         report.bias_floor().unwrap_or(f64::NAN),
-        report.rows.last().map_or(0, |r| r.spp),
+        report.rows.last().map_or(0.0, |r| r.spp),
         report.rows.last().map_or(f64::NAN, |r| r.pixel_floor),
     );
     let _ = writeln!(
@@ -860,6 +867,33 @@ mod tests {
         let slope = log_log_slope(&points).expect("slope");
         assert!((slope + 0.75).abs() < 1e-12, "{slope}");
         assert_eq!(log_log_slope(&[(1.0, 1.0)]), None);
+    }
+
+    /// Sample counts run from 1 to 2^20, and fractional ones are adaptive averages.
+    #[test]
+    fn sample_counts_are_checked() {
+        let request = |spp: Vec<f64>, adaptive: bool| ConvergeRequest {
+            scene: PathBuf::from("s.pov"),
+            declares: Vec::new(),
+            include_paths: Vec::new(),
+            reference: PathBuf::from("r.exr"),
+            spp,
+            seeds: 2,
+            povray: false,
+            output_dir: PathBuf::from("out"),
+            threads: None,
+            stratified: true,
+            targets: vec![0.01],
+            light_samples: LightSamples::Cover,
+            adaptive,
+        };
+        let invalid =
+            |r: ConvergeRequest| matches!(validate(&r), Err(StudyError::InvalidRequest(_)));
+        assert!(validate(&request(vec![1.0, 1.5, 2.0], true)).is_ok());
+        assert!(invalid(request(vec![1.0, 1.5], false)));
+        assert!(invalid(request(vec![0.5], true)));
+        assert!(invalid(request(Vec::new(), true)));
+        assert!(validate(&request(vec![1.0, 4.0], false)).is_ok());
     }
 
     #[test]
