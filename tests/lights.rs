@@ -103,7 +103,8 @@ fn chi_square_upper_tail(x: f64, m: f64) -> f64 {
 }
 
 /// Russian roulette keeps the expectation: replicates with it on and off agree tile by
-/// tile (delta = 0, z* = 4.78) and in the chi-square aggregate (p > 1e-3).
+/// tile (delta = 0, z* = 4.78) and in the chi-square aggregate (p > 1e-3). Roulette is at
+/// work in this scene (fewer secondary rays with it), else the test would say nothing.
 #[test]
 fn roulette_on_and_off_agree() {
     let scene = scene_file("reflection.pov", 96, 72);
@@ -113,6 +114,22 @@ fn roulette_on_and_off_agree() {
         samples_per_pixel: 16,
         ..RenderOptions::default()
     };
+    let secondary = |roulette: bool| {
+        let o = RenderOptions {
+            roulette,
+            ..base.clone()
+        };
+        penumbra::render_scene(&scene, &o, &())
+            .expect("renders")
+            .1
+            .rays
+            .secondary
+    };
+    let (cut, full) = (secondary(true), secondary(false));
+    assert!(
+        cut < full,
+        "roulette ended no branch: {cut} rays against {full}"
+    );
     let on = replicates(&scene, &base, 8, 500);
     let off = replicates(
         &scene,
