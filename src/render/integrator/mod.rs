@@ -44,14 +44,22 @@ use direct::ShadedLayer;
 use interiors::InteriorStack;
 use optics::{fade, mirror_direction};
 
-/// Below this path weight, Russian roulette starts. A branch that survives it is divided
-/// by its survival probability, as much as 20 times brighter, and at 0.1 those were most
-/// of the noise where mirrors see each other: 640x480 adaptive, 2 seeds, RMSE against
-/// POV-Ray's k = 8 reference at 2 / 4 / 8 / 16 spp, reflection.pov 0.00329 / 0.00187 /
-/// 0.00111 / 0.00066 -> 0.00127 / 0.00077 / 0.00047 / 0.00035 for 1-5% more time, glass.pov
-/// 0.0122 / 0.0074 / 0.0048 / 0.0036 -> 0.0080 / 0.0052 / 0.0037 / 0.0031 for 5-14% more
-/// (0.003 took glass 6-10% more time again for 1-2% less error).
+/// Below this path weight, Russian roulette starts, within the first [`SHALLOW_LEVELS`]
+/// of a ray tree. A branch that survives it is divided by its survival probability, as
+/// much as 20 times brighter, and at 0.1 those were most of the noise where mirrors see
+/// each other: 640x480 adaptive, 2 seeds, RMSE against POV-Ray's k = 8 reference at 2 / 4 /
+/// 8 / 16 spp, reflection.pov 0.00329 / 0.00187 / 0.00111 / 0.00066 -> 0.00127 / 0.00077 /
+/// 0.00047 / 0.00035 for 1-5% more time, glass.pov 0.0122 / 0.0074 / 0.0048 / 0.0036 ->
+/// 0.0081 / 0.0053 / 0.0038 / 0.0031 for 2-10% more (0.003 took glass 6-10% more time
+/// again for 1-2% less error).
 const ROULETTE_WEIGHT: f64 = 0.01;
+/// Roulette's threshold past the first [`SHALLOW_LEVELS`]: there a tree that both reflects
+/// and refracts doubles at every level, and tracing it down to 0.01 took glass stacked 50
+/// levels deep (advanced/blocks/stackertransp.pov, 160x120, 4 spp) from 1.0 M rays to 2.9
+/// M, 3 times the time for 11% less noise.
+const DEEP_ROULETTE_WEIGHT: f64 = 0.1;
+/// The levels of POV-Ray's default max_trace_level, where most scenes' trees end.
+const SHALLOW_LEVELS: u32 = 5;
 /// The smallest survival probability, which bounds the variance roulette can add.
 const ROULETTE_MIN_Q: f64 = 0.05;
 
@@ -642,7 +650,7 @@ impl<'a> Integrator<'a> {
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> Option<(DVec3, f64)> {
-        let q = self.survival(branch.weight, branch.linear);
+        let q = self.survival(branch.weight, branch.linear, branch.level);
         if q <= 0.0 || !self.survives(q, s.path.block(), branch.roulette, sampler) {
             return None;
         }
@@ -673,16 +681,21 @@ impl<'a> Integrator<'a> {
         sky_colour(sky, d, scene.background.rgb, scene.legacy)
     }
 
-    /// The probability a branch of this weight is traced: roulette's below its threshold
-    /// where the branch enters linearly, 0 below adc_bailout where the tree ends as
-    /// POV-Ray's, 1 otherwise.
-    fn survival(&self, weight: f64, linear: bool) -> f64 {
+    /// The probability a branch of this weight at this level is traced: roulette's below
+    /// its threshold where the branch enters linearly, 0 below adc_bailout where the tree
+    /// ends as POV-Ray's, 1 otherwise.
+    fn survival(&self, weight: f64, linear: bool, level: u32) -> f64 {
         if weight <= 0.0 {
             return 0.0;
         }
+        let threshold = if level <= SHALLOW_LEVELS {
+            ROULETTE_WEIGHT
+        } else {
+            DEEP_ROULETTE_WEIGHT
+        };
         match self.termination {
-            Termination::Roulette if linear && weight < ROULETTE_WEIGHT => {
-                (weight / ROULETTE_WEIGHT).max(ROULETTE_MIN_Q)
+            Termination::Roulette if linear && weight < threshold => {
+                (weight / threshold).max(ROULETTE_MIN_Q)
             }
             Termination::AdcBailout if weight < self.scene.settings.adc_bailout => 0.0,
             _ => 1.0,
