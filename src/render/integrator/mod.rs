@@ -971,11 +971,16 @@ mod tests {
     fn roulette_survival_is_bounded_and_only_for_low_weights() {
         let scene = PreparedScene::new(&crate::scene::Scene::default());
         let on = Integrator::new(&scene, &RenderOptions::default());
-        assert_eq!(on.survival(0.5, true), 1.0);
-        assert_eq!(on.survival(0.05, true), 0.5);
-        assert_eq!(on.survival(1e-6, true), ROULETTE_MIN_Q);
-        assert_eq!(on.survival(0.05, false), 1.0);
-        assert_eq!(on.survival(0.0, true), 0.0);
+        // Within the first five levels roulette starts at 0.01, deeper at 0.1.
+        let (shallow, deep) = (SHALLOW_LEVELS, SHALLOW_LEVELS + 1);
+        assert_eq!(on.survival(0.5, true, shallow), 1.0);
+        assert_eq!(on.survival(0.05, true, shallow), 1.0);
+        assert_eq!(on.survival(0.005, true, shallow), 0.5);
+        assert_eq!(on.survival(0.05, true, deep), 0.5);
+        assert_eq!(on.survival(1e-6, true, shallow), ROULETTE_MIN_Q);
+        assert_eq!(on.survival(1e-6, true, deep), ROULETTE_MIN_Q);
+        assert_eq!(on.survival(0.005, false, shallow), 1.0);
+        assert_eq!(on.survival(0.0, true, shallow), 0.0);
         let off = Integrator::new(
             &scene,
             &RenderOptions {
@@ -983,12 +988,12 @@ mod tests {
                 ..RenderOptions::default()
             },
         );
-        assert_eq!(off.survival(1e-6, true), 1.0);
+        assert_eq!(off.survival(1e-6, true, deep), 1.0);
         let mut gamma = PreparedScene::new(&crate::scene::Scene::default());
         gamma.output_gamma = Some(crate::render::prepared::GammaDecode::Power(2.2));
         let cut = Integrator::new(&gamma, &RenderOptions::default());
-        assert_eq!(cut.survival(0.05, true), 1.0);
-        assert_eq!(cut.survival(0.001, true), 0.0);
+        assert_eq!(cut.survival(0.05, true, deep), 1.0);
+        assert_eq!(cut.survival(0.001, true, shallow), 0.0);
     }
 
     /// A plane under `light`, shaded along one ray from above at sample `index` of `spp` by
