@@ -101,6 +101,41 @@ fn covering_the_light_grid_is_unbiased_and_lowers_the_noise() {
     );
 }
 
+/// Under POV-Ray `adaptive` area lights the pilot shades a sample as the render does (the
+/// adaptive rule), so its sample stays near penumbrae too: every camera ray ends in the
+/// image (under a light that the render covers instead, the pilot's samples near penumbrae
+/// are left out), and the render still passes the statistical test against POV-Ray.
+#[test]
+fn the_pilot_stays_under_adaptive_lights_without_bias() {
+    let render = |name: &str| -> (Vec<Image>, Vec<(u64, u64)>) {
+        let (scene, _) = scene_and_reference(name);
+        (0..4)
+            .map(|k| {
+                let o = RenderOptions {
+                    width: 160,
+                    height: 120,
+                    samples_per_pixel: 8,
+                    seed: 110 + k,
+                    adaptive: true,
+                    ..RenderOptions::default()
+                };
+                let (image, stats) = penumbra::render_scene(&scene, &o, &()).expect("renders");
+                (image, (stats.rays.camera, stats.samples))
+            })
+            .unzip()
+    };
+    let (images, counts) = render("area_adaptive");
+    for &(camera, samples) in &counts {
+        assert_eq!(camera, samples, "pilot samples were left out");
+    }
+    let (_, covered) = render("soft_shadow");
+    assert!(covered.iter().all(|&(camera, samples)| camera > samples));
+    let (_, reference) = scene_and_reference("area_adaptive");
+    let verdict = study::evaluate(&images, &reference.full, &reference.half).unwrap();
+    println!("area_adaptive, adaptive 8 spp: {verdict}");
+    assert!(verdict.passes(SQRT_B_THRESHOLD), "{verdict}");
+}
+
 /// A scene of scenes/ at 160x120 and its committed POV-Ray reference.
 fn scene_and_reference(name: &str) -> (penumbra::scene::Scene, study::reference::Reference) {
     let root = env!("CARGO_MANIFEST_DIR");

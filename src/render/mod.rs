@@ -213,6 +213,7 @@ pub fn render_from(
     } else if options.adaptive {
         adaptive_passes(
             options,
+            pilot_is_a_sample(scene, options),
             Share {
                 range: range.clone(),
                 spp: options.samples_per_pixel.max(1),
@@ -442,6 +443,7 @@ impl PixelWork {
 /// pilot, which is deterministic, so the parts sum to the whole render exactly.
 fn adaptive_passes(
     options: &RenderOptions,
+    exact_pilot: bool,
     share: Share,
     checkpoint: Option<&Film>,
     run: &Pass,
@@ -451,7 +453,7 @@ fn adaptive_passes(
         film: mut pilot,
         mut rays,
         pixels,
-    } = pilot_pass(options, run);
+    } = pilot_pass(options, run, exact_pilot);
     let w = pilot.width;
     let shown = |i: usize| {
         let win = options.window.as_ref();
@@ -459,12 +461,13 @@ fn adaptive_passes(
     };
     // The pilot samples that stay are this render's (or its checkpoint's) when it starts at 0.
     let first_shard = share.range.start == 0;
-    let holds_pilot = |i: usize| first_shard && pixels[i].one_ray && shown(i);
+    let holds_pilot = |i: usize| first_shard && pixels[i].keeps_pilot && shown(i);
     let average = options
         .average_spp
         .unwrap_or(f64::from(options.samples_per_pixel.max(1)));
     let counts = allocate(&pixels, average);
     let one_ray: Vec<bool> = pixels.iter().map(|p| p.one_ray).collect();
+    let kept: Vec<bool> = pixels.iter().map(|p| p.keeps_pilot).collect();
     let resume_at = checkpoint.map_or_else(Vec::new, |c| {
         let held = |i: usize| c.pixels[i].count.saturating_sub(u32::from(holds_pilot(i)));
         (0..counts.len())
@@ -494,7 +497,7 @@ fn adaptive_passes(
             resume_at: &resume_at,
             positions: Positions {
                 seed: options.seed,
-                first: FirstPoints::AfterPilot,
+                first: FirstPoints::AfterPilot(&kept),
             },
         };
         let more = run(&plan, progress, Some(film));
@@ -528,8 +531,22 @@ struct Pilot {
     pixels: Vec<AdaptivePixel>,
 }
 
-/// The pilot of [`adaptive_passes`] over the whole image and the decisions read from it.
-fn pilot_pass(options: &RenderOptions, run: &Pass) -> Pilot {
+/// Whether the adaptive pilot's sample is shaded as the render's samples near a penumbra
+/// are, so that it can stay there too: where every area light follows POV-Ray's `adaptive`
+/// rule, which the pilot evaluates as the render does (its fixed shadow rays are for the
+/// other area lights, whose render samples cover the grid instead).
+fn pilot_is_a_sample(scene: &PreparedScene, options: &RenderOptions) -> bool {
+    options.area_lights == AreaLightMode::Pov
+        && scene.lights.iter().all(|l| {
+            l.area
+                .as_ref()
+                .is_none_or(|a| a.adaptive.is_some() && !l.area_illumination)
+        })
+}
+
+/// The pilot of [`adaptive_passes`] over the whole image and the decisions read from it;
+/// with `exact`, its samples stay near penumbrae too ([`pilot_is_a_sample`]).
+fn pilot_pass(options: &RenderOptions, run: &Pass, exact: bool) -> Pilot {
     let PassOutput { film, rays, work } = run(&pilot_plan(options), &(), None);
     let w = film.width;
     // Shadow rays around the pixel (itself left out) that arrived, and that were stopped.
@@ -558,6 +575,7 @@ fn pilot_pass(options: &RenderOptions, run: &Pass) -> Pilot {
             change,
             cost,
             one_ray: !near_penumbra.get(i).copied().unwrap_or(false),
+            keeps_pilot: exact || !near_penumbra.get(i).copied().unwrap_or(false),
         })
         .collect();
     Pilot { film, rays, pixels }
@@ -644,8 +662,9 @@ struct Positions<'a> {
 /// Where a per-pixel plan's sample 0 of each pixel takes its position: after the points
 /// the pixel's earlier samples took, so that together they stay one stratified set.
 enum FirstPoints<'a> {
-    /// After the adaptive pilot's point 0 where the pilot sample stays (`one_ray`), else 0.
-    AfterPilot,
+    /// After the adaptive pilot's point 0 where the pilot sample stays (the pixel's flag
+    /// here), else 0.
+    AfterPilot(&'a [bool]),
     /// At each pixel's listed point (the samples that earlier passes took).
     Listed(&'a [u32]),
 }
@@ -745,7 +764,7 @@ impl SamplePlan<'_> {
                     position: PositionPlan {
                         seed: positions.seed,
                         first: match positions.first {
-                            FirstPoints::AfterPilot => u32::from(one_ray[i]),
+                            FirstPoints::AfterPilot(kept) => u32::from(kept[i]),
                             FirstPoints::Listed(first) => first[i],
                         },
                     },
@@ -861,8 +880,11 @@ struct AdaptivePixel {
     change: f64,
     /// Rays per (one-ray) sample.
     cost: f64,
-    /// No penumbra near: one shadow ray per sample, and the pilot sample kept.
+    /// No penumbra near: one shadow ray per sample.
     one_ray: bool,
+    /// The pilot sample stays in the pixel's mean (one-ray pixels, and every pixel where
+    /// the pilot's sample is shaded as the render's).
+    keeps_pilot: bool,
 }
 
 /// The samples each pixel takes after the pilot. Every pixel takes a quarter of `spp` (at
@@ -881,8 +903,14 @@ fn allocate(pixels: &[AdaptivePixel], average: f64) -> Vec<u32> {
     let spp = average.ceil() as u32;
     let least = (spp / 4).min(spp - 1);
     // Near a penumbra the pilot is left out: at least one sample of the pixel's own.
-    let floor = |p: &AdaptivePixel| if p.one_ray { least } else { least.max(1) };
-    let full = |p: &AdaptivePixel| if p.one_ray { average - 1.0 } else { average };
+    let floor = |p: &AdaptivePixel| if p.keeps_pilot { least } else { least.max(1) };
+    let full = |p: &AdaptivePixel| {
+        if p.keeps_pilot {
+            average - 1.0
+        } else {
+            average
+        }
+    };
     let time: f64 = pixels
         .iter()
         .map(|p| p.cost * (full(p) - f64::from(floor(p))))
@@ -1339,7 +1367,7 @@ mod tests {
             resume_at: &[],
             positions: Positions {
                 seed: options.seed,
-                first: FirstPoints::AfterPilot,
+                first: FirstPoints::AfterPilot(&[false, true]),
             },
         };
         let (near, far) = (plan.pixel(0), plan.pixel(1));
@@ -1354,6 +1382,7 @@ mod tests {
             change,
             cost,
             one_ray,
+            keeps_pilot: one_ray,
         };
         let pixels = [
             pixel(0.0, 2.0, true),
@@ -1393,6 +1422,7 @@ mod tests {
             change,
             cost,
             one_ray,
+            keeps_pilot: one_ray,
         };
         let pixels = [
             pixel(0.0, 2.0, true),
