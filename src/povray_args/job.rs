@@ -107,6 +107,9 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
     let window = pixel_window(settings)?;
     let frames = frames(settings, &scene)?;
     let mut sampling = match settings.spp {
+        Some(spp) if !(1.0..=f64::from(1u32 << 20)).contains(&spp) => {
+            return Err(format!("--spp {spp} is outside 1..=1048576"));
+        }
         Some(spp) => Sampling::of(spp),
         None => sampling_for(&settings.antialias),
     };

@@ -212,6 +212,14 @@ fn a_fractional_spp_is_an_adaptive_average() {
     assert_eq!((whole.spp, whole.average), (2, None));
     assert!(sampling("scene.pov --spp 1.5 --uniform").is_err());
     assert!(read("scene.pov --spp 0.5").is_err());
+    // `render --spp` reaches the job without the option table's check.
+    let settings = |spp: f64| PovSettings {
+        spp: Some(spp),
+        ..read("scene.pov").unwrap()
+    };
+    for bad in [0.0, -2.0, f64::NAN, 1e30] {
+        assert!(job::job(&settings(bad)).is_err(), "{bad}");
+    }
 }
 
 #[test]

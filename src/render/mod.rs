@@ -571,11 +571,14 @@ fn pilot_pass(options: &RenderOptions, run: &Pass, exact: bool) -> Pilot {
         .into_iter()
         .zip(neighbour_cost(&work, w))
         .enumerate()
-        .map(|(i, (change, cost))| AdaptivePixel {
-            change,
-            cost,
-            one_ray: !near_penumbra.get(i).copied().unwrap_or(false),
-            keeps_pilot: exact || !near_penumbra.get(i).copied().unwrap_or(false),
+        .map(|(i, (change, cost))| {
+            let one_ray = !near_penumbra.get(i).copied().unwrap_or(false);
+            AdaptivePixel {
+                change,
+                cost,
+                one_ray,
+                keeps_pilot: exact || one_ray,
+            }
         })
         .collect();
     Pilot { film, rays, pixels }
@@ -888,7 +891,7 @@ struct AdaptivePixel {
 }
 
 /// The samples each pixel takes after the pilot. Every pixel takes a quarter of `spp` (at
-/// least one near a penumbra, where the pilot sample is left out: the change around a pixel
+/// least one where the pilot sample is left out, near a penumbra: the change around a pixel
 /// is only a sign of its noise, and in an out-of-focus blur eight neighbours of one sample
 /// each can agree by chance), and they share the time the rest would take: pixel i gets n_i
 /// in proportion to s_i / sqrt(c_i), its noise s (the change around it stands for it) over
@@ -902,7 +905,7 @@ struct AdaptivePixel {
 fn allocate(pixels: &[AdaptivePixel], average: f64) -> Vec<u32> {
     let spp = average.ceil() as u32;
     let least = (spp / 4).min(spp - 1);
-    // Near a penumbra the pilot is left out: at least one sample of the pixel's own.
+    // Where the pilot is left out (near a penumbra): at least one sample of the pixel's own.
     let floor = |p: &AdaptivePixel| if p.keeps_pilot { least } else { least.max(1) };
     let full = |p: &AdaptivePixel| {
         if p.keeps_pilot {
