@@ -38,7 +38,7 @@ const TILE: usize = 16;
 /// otherwise. Measured at 640x480 on the twelve scenes of docs/convergence.md (2 seeds, one
 /// thread; squared error times time, uniform over adaptive): from 2 spp on, adaptive is the
 /// more efficient on every scene (1.09x to 54x); at 1 spp it is the less efficient on 8 of
-/// the 12 (0.65x to 0.92x), its pilot then being the whole budget. (A fractional average
+/// the 12 (0.80x to 0.92x), its pilot then being the whole budget. (A fractional average
 /// above 1, which rounds up to 2, is adaptive: at 1.125 it beat uniform at 1 on 11 of 12.)
 pub fn adaptive_by_default(spp: u32) -> bool {
     spp >= 2
