@@ -1379,20 +1379,29 @@ mod tests {
         assert_eq!((far.range, far.position), (0..5, at(77, 1)));
     }
 
-    #[test]
-    fn pixels_share_their_time_by_change_over_the_root_of_cost() {
-        let pixel = |change: f64, cost: f64, one_ray: bool| AdaptivePixel {
+    /// A pixel as the pilot leaves it; its pilot sample stays where `one_ray`.
+    fn pixel(change: f64, cost: f64, one_ray: bool) -> AdaptivePixel {
+        AdaptivePixel {
             change,
             cost,
             one_ray,
             keeps_pilot: one_ray,
-        };
-        let pixels = [
+        }
+    }
+
+    /// Three one-ray pixels of changes 0, 1, 1 and costs 2, 2, 8, and one near a penumbra.
+    fn four_pixels() -> [AdaptivePixel; 4] {
+        [
             pixel(0.0, 2.0, true),
             pixel(1.0, 2.0, true),
             pixel(1.0, 8.0, true),
             pixel(5.0, 2.0, false),
-        ];
+        ]
+    }
+
+    #[test]
+    fn pixels_share_their_time_by_change_over_the_root_of_cost() {
+        let pixels = four_pixels();
         let counts = allocate(&pixels, 13.0);
         // Each takes a quarter of the budget (3), and they share the time of the rest at
         // their costs: 9 more each for the one-ray pixels (whose pilot sample stays), 10
@@ -1410,8 +1419,14 @@ mod tests {
         // it stays.
         let quiet = [pixel(0.0, 1.0, true), pixel(0.0, 3.0, false)];
         assert_eq!(allocate(&quiet, 8.0), vec![7, 8]);
-        // One sample: a pixel near a penumbra still takes one of its own.
+        // One sample: a pixel near a penumbra still takes one of its own, unless its pilot
+        // sample stays (under adaptive area lights).
         assert_eq!(allocate(&pixels, 1.0), vec![0, 0, 0, 1]);
+        let kept = AdaptivePixel {
+            keeps_pilot: true,
+            ..pixel(5.0, 2.0, false)
+        };
+        assert_eq!(allocate(&[kept], 1.0), vec![0]);
     }
 
     /// A fractional average shares the time its fraction buys as a whole count does: at
@@ -1421,18 +1436,7 @@ mod tests {
     /// counts around the average.
     #[test]
     fn a_fractional_average_spends_its_fraction_where_the_change_is() {
-        let pixel = |change: f64, cost: f64, one_ray: bool| AdaptivePixel {
-            change,
-            cost,
-            one_ray,
-            keeps_pilot: one_ray,
-        };
-        let pixels = [
-            pixel(0.0, 2.0, true),
-            pixel(1.0, 2.0, true),
-            pixel(1.0, 8.0, true),
-            pixel(5.0, 2.0, false),
-        ];
+        let pixels = four_pixels();
         let (one, half, two) = (
             allocate(&pixels, 1.0),
             allocate(&pixels, 1.5),
