@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use super::{Antialias, Bound, PovSettings};
 use crate::lang::AnimationClock;
-use crate::render::{PixelWindow, adaptive_by_default};
+use crate::render::{PixelWindow, adaptive_by_default, spp_in_range};
 
 /// Samples per pixel and whether a pilot pass spreads them where the noise is.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -107,7 +107,7 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
     let window = pixel_window(settings)?;
     let frames = frames(settings, &scene)?;
     let mut sampling = match settings.spp {
-        Some(spp) if !(1.0..=f64::from(1u32 << 20)).contains(&spp) => {
+        Some(spp) if !spp_in_range(spp) => {
             return Err(format!("--spp {spp} is outside 1..=1048576"));
         }
         Some(spp) => Sampling::of(spp),

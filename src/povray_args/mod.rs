@@ -593,7 +593,7 @@ fn whole(value: &str, range: std::ops::RangeInclusive<u32>) -> Result<u32, Strin
 /// Samples per pixel: whole, or an adaptive render's fractional average, from 1 to 2^20.
 fn samples(value: &str) -> Result<f64, String> {
     let x = number(value)?;
-    if !(1.0..=f64::from(1u32 << 20)).contains(&x) {
+    if !crate::render::spp_in_range(x) {
         return Err(format!("{x} is outside 1..=1048576"));
     }
     Ok(x)

@@ -44,6 +44,11 @@ pub fn adaptive_by_default(spp: u32) -> bool {
     spp >= 2
 }
 
+/// The sample counts `--spp` accepts, whole or (adaptive) fractional: from 1 to 2^20.
+pub fn spp_in_range(spp: f64) -> bool {
+    (1.0..=f64::from(1u32 << 20)).contains(&spp)
+}
+
 #[derive(Clone, Debug)]
 pub struct RenderOptions {
     pub width: usize,

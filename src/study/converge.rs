@@ -196,7 +196,7 @@ impl Log for () {
 
 fn validate(req: &ConvergeRequest) -> Result<(), StudyError> {
     let invalid = |m: String| Err(StudyError::InvalidRequest(m));
-    if req.spp.is_empty() || req.spp.iter().any(|&n| !(1.0..=1_048_576.0).contains(&n)) {
+    if req.spp.is_empty() || !req.spp.iter().all(|&n| crate::render::spp_in_range(n)) {
         return invalid("--spp needs one or more sample counts from 1 to 1048576".into());
     }
     if !req.adaptive && req.spp.iter().any(|n| n.fract() != 0.0) {
