@@ -435,7 +435,9 @@ impl PixelWork {
 /// long it is sampled is the usual adaptive bias):
 /// - near a penumbra (within [`PENUMBRA_REACH`], some other pixel's shadow ray towards an
 ///   area light arrived and some other's was stopped) the pilot sample is left out and
-///   fresh samples cover the light grid ([`LightSamples::Cover`]);
+///   fresh samples cover the light grid ([`LightSamples::Cover`]), unless every area light
+///   follows POV-Ray's adaptive rule, which the pilot shades as the render does
+///   ([`pilot_is_a_sample`]): then it stays there too;
 /// - elsewhere every shadow ray around agreed, so one shadow ray per sample is exact: the
 ///   pilot sample stays, and the pixel's later samples take the positions after its
 ///   ([`PositionPlan`]);
