@@ -666,7 +666,7 @@ pub fn plane_hit(ray: &Ray, normal: DVec3, distance: f64, t_max: f64) -> Option<
 
 /// A sphere's first crossing in (0, t_max), for callers that test spheres before any
 /// general dispatch (most items in a scene of many objects are spheres). The roots are
-/// those of [`sphere_roots`], read in place rather than through a [`Roots`] list.
+/// those of `sphere_roots`, read in place rather than through a root list.
 #[inline(always)]
 pub fn sphere_first_hit(ray: &Ray, center: DVec3, radius: f64, t_max: f64) -> Option<f64> {
     let (q, a, c) = sphere_q(ray, center, radius, true)?;
