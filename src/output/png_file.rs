@@ -30,7 +30,7 @@ pub fn write_png(path: &Path, image: &Image, bit_depth: BitDepth) -> Result<(), 
                 .pixels
                 .iter()
                 .flatten()
-                .map(|&v| srgb::quantize(v, 255) as u8)
+                .map(|&v| srgb::quantize8(v))
                 .collect();
             (bytes, ExtendedColorType::Rgb8)
         }

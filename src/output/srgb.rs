@@ -31,6 +31,38 @@ pub fn quantize(linear: f32, max_code: u32) -> u32 {
     (encode(v) * f64::from(max_code)).round() as u32
 }
 
+/// [`quantize`] to 8 bits without a power per value: the code is the number of the 255
+/// code thresholds (the least `f32` that reaches each code, found once by bisection over
+/// `quantize` itself) at or below the value. Same codes, as `quantize` rises with its
+/// input; the power was a tenth of a one-sample 640x480 render's instructions.
+pub fn quantize8(linear: f32) -> u8 {
+    if linear.is_nan() {
+        return 0;
+    }
+    let thresholds = THRESHOLDS8.get_or_init(thresholds8);
+    thresholds.partition_point(|&t| t <= linear) as u8
+}
+
+static THRESHOLDS8: std::sync::OnceLock<[f32; 255]> = std::sync::OnceLock::new();
+
+/// For codes 1 to 255, the least non-negative `f32` that `quantize` maps to that code or
+/// above (non-negative floats order as their bit patterns).
+fn thresholds8() -> [f32; 255] {
+    std::array::from_fn(|i| {
+        let code = i as u32 + 1;
+        let (mut low, mut high) = (0u32, 1.0f32.to_bits());
+        while low < high {
+            let mid = low + (high - low) / 2;
+            if quantize(f32::from_bits(mid), 255) >= code {
+                high = mid;
+            } else {
+                low = mid + 1;
+            }
+        }
+        f32::from_bits(low)
+    })
+}
+
 /// The linear value an integer code stands for.
 pub fn dequantize(code: u32, max_code: u32) -> f32 {
     decode(f64::from(code) / f64::from(max_code)) as f32

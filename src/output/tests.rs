@@ -55,6 +55,40 @@ fn quantize_clamps_and_handles_non_finite() {
     assert_eq!(srgb::quantize(f32::NEG_INFINITY, 255), 0);
 }
 
+/// The table's 8-bit codes are `quantize`'s: around every code's value and every switch
+/// between two codes (8 floats either side of each), at a million values spread over
+/// [-0.1, 1.2], and at the special values.
+#[test]
+fn quantize8_gives_quantizes_codes() {
+    let same = |v: f32| assert_eq!(u32::from(srgb::quantize8(v)), srgb::quantize(v, 255), "{v}");
+    let around = |v: f32| {
+        let bits = v.to_bits();
+        (bits.saturating_sub(8)..=bits + 8).for_each(|b| same(f32::from_bits(b)));
+    };
+    for code in 0..=255u32 {
+        around(srgb::dequantize(code, 255));
+        around(srgb::decode((f64::from(code) + 0.5) / 255.0) as f32);
+    }
+    let mut state = 7u64;
+    for _ in 0..1_000_000 {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1);
+        same(-0.1 + 1.3 * (state >> 40) as f32 / (1u64 << 24) as f32);
+    }
+    for v in [
+        0.0,
+        -0.0,
+        1.0,
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::MIN_POSITIVE,
+    ] {
+        same(v);
+    }
+}
+
 #[test]
 fn png_8_and_16_bit_round_trip_within_quantisation() {
     let scratch = Scratch::new("png");
