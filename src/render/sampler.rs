@@ -164,6 +164,21 @@ impl PixelSampler {
         FreeStream(Pcg32::new(mix(key ^ self.index as u64), key | 1))
     }
 
+    /// The jitters of an area light's grid cells in `dimension` at this pixel's
+    /// `point`-th test of its cells ([`CellJitter`]).
+    pub fn cell_jitter(&self, dimension: u32, point: u32) -> CellJitter {
+        let key = mix(self.key(dimension) ^ CELL);
+        let base = if self.stratified {
+            let x = owen_scrambled_reversed(point, key as u32);
+            let y = owen_scrambled_reversed(sobol_second_reversed(point), (key >> 32) as u32);
+            (x, y)
+        } else {
+            let h = mix(key ^ mix(u64::from(point)));
+            (h as u32, (h >> 32) as u32)
+        };
+        CellJitter { base }
+    }
+
     /// Skips to a fixed dimension, so that the value a light or a bounce uses does not
     /// depend on how many values earlier events happened to draw.
     pub fn set_dimension(&mut self, dimension: u32) {
@@ -178,6 +193,34 @@ fn pixel_key(x: u32, y: u32, seed: u64) -> u64 {
 /// Salts that keep the shared and free streams apart from the stratified ones.
 const SHARED: u64 = 0x5348_4152_4544_0001;
 const FREE: u64 = 0x4652_4545_0000_0001;
+const CELL: u64 = 0x4345_4c4c_0000_0001;
+
+/// The jitter of each cell of an area light's grid, each time a pixel tests it. The
+/// `point`-th test of any cell (each pixel sample's, or each cover of the grid's, counted
+/// from 0) takes point `point` of the pixel's Owen-scrambled Sobol sequence in the light's
+/// dimension, shifted modulo 1 by cell `k`'s step of an R2 sequence (k times the plastic
+/// number's reciprocal powers). Each test is uniform over its cell (a scrambled point is
+/// uniform, and a fixed shift keeps it so), and a pixel's tests of one cell are stratified
+/// over it: a shifted net keeps one point in each stratum of either axis. Drawn
+/// independently, as they were, a cell that a shadow edge crosses added its full variance
+/// at every test: scenes/area_illumination.pov (7 x 3, jittered) at 640x480, RMSE at 2 / 4
+/// / 8 / 16 spp 0.0062 / 0.0044 / 0.0030 / 0.0021 -> 0.0053 / 0.0035 / 0.0022 / 0.0015.
+/// The sequence point is computed once for all the cells of a test; a hash per cell
+/// instead of the step cost 6% more time for a little less gain.
+#[derive(Clone, Copy, Debug)]
+pub struct CellJitter {
+    /// The sequence point, as 32-bit fractions.
+    base: (u32, u32),
+}
+
+impl CellJitter {
+    pub fn at(&self, cell: u32) -> (f64, f64) {
+        let x = self.base.0.wrapping_add(cell.wrapping_mul(0xc13f_a9a9));
+        let y = self.base.1.wrapping_add(cell.wrapping_mul(0x91e1_0da5));
+        let unit = |v: u32| (f64::from(v) + 0.5) * (1.0 / 4_294_967_296.0);
+        (unit(x), unit(y))
+    }
+}
 
 /// Independent uniform values in [0, 1) for one pixel sample.
 pub struct FreeStream(Pcg32);
@@ -349,6 +392,79 @@ mod tests {
             }
         }
         assert!(seen.iter().all(|&s| s));
+    }
+
+    /// A pixel's 8 tests of one grid cell, taken back by the cell's fixed step, are a
+    /// (0, 3, 2)-net: one in each cell of the 8 x 1, 4 x 2, 2 x 4 and 1 x 8 grids.
+    #[test]
+    fn a_cells_tests_are_stratified_over_it() {
+        let mut s = PixelSampler::new(8);
+        s.start(5, 9, 0, 3);
+        for cell in [0u32, 1, 6, 20] {
+            let step = (
+                cell.wrapping_mul(0xc13f_a9a9),
+                cell.wrapping_mul(0x91e1_0da5),
+            );
+            let unshift = |v: f64, step: u32| {
+                let fixed = (v * 4_294_967_296.0 - 0.5) as u32;
+                f64::from(fixed.wrapping_sub(step)) / 4_294_967_296.0
+            };
+            let points: Vec<(f64, f64)> = (0..8)
+                .map(|test| {
+                    let (u, v) = s.cell_jitter(11, test).at(cell);
+                    (unshift(u, step.0), unshift(v, step.1))
+                })
+                .collect();
+            for a in 0..=3 {
+                let (cols, rows) = (1u32 << a, 1u32 << (3 - a));
+                let mut hits = vec![0u32; 8];
+                for &(u, v) in &points {
+                    hits[((v * f64::from(rows)) as u32 * cols + (u * f64::from(cols)) as u32)
+                        as usize] += 1;
+                }
+                assert!(
+                    hits.iter().all(|&h| h == 1),
+                    "cell {cell}, {cols}x{rows}: {hits:?}"
+                );
+            }
+        }
+    }
+
+    /// Over 2,000 pixels the jitter is uniform (mean 1/2 within 4 standard errors of 8,000
+    /// independent draws, 0.013), and a pixel's 8 tests of a cell count the stretch [0, 0.3)
+    /// of an axis with a variance far below the binomial 8 x 0.3 x 0.7 = 1.68 of independent
+    /// draws. Stratified, the stretch holds whole strata, one point each, and at most two
+    /// partial ones at its ends, of lengths p1 and p2: variance p1(1 - p1) + p2(1 - p2),
+    /// at most 0.5, whose standard error over 2,000 pixels is 0.016. The independent
+    /// sampler's tests, the control, show the binomial's (standard error about 0.07).
+    #[test]
+    fn cell_jitter_is_uniform_and_cuts_the_count_variance() {
+        for (stratified, low, high) in [(true, 0.0, 0.57), (false, 1.4, 2.0)] {
+            let mut s = if stratified {
+                PixelSampler::new(8)
+            } else {
+                PixelSampler::independent(8)
+            };
+            let (mut sum, mut counts) = (0.0, Vec::new());
+            for pixel in 0..2000u32 {
+                s.start(pixel % 40, pixel / 40, 0, 17);
+                let mut count = 0.0;
+                for test in 0..8 {
+                    let (u, v) = s.cell_jitter(4, test).at(pixel % 21);
+                    sum += u + v;
+                    count += f64::from(u8::from(u < 0.3));
+                }
+                counts.push(count);
+            }
+            let mean = sum / 32_000.0;
+            assert!(
+                (mean - 0.5).abs() < 4.0 * 0.289 / 8000f64.sqrt(),
+                "mean {mean}"
+            );
+            let m = counts.iter().sum::<f64>() / 2000.0;
+            let var = counts.iter().map(|c| (c - m) * (c - m)).sum::<f64>() / 1999.0;
+            assert!((low..high).contains(&var), "stratified {stratified}: {var}");
+        }
     }
 
     #[test]

@@ -195,9 +195,10 @@ impl Integrator<'_> {
     /// (`PreparedArea::shaded_points`; one point per sample left the grid's spread of
     /// directions as noise over every lit surface). The shadow rays are as for a light
     /// without it: the visibility is the grid's, tested once for each side of the surface
-    /// the points light. Each point is as likely to be shaded as any other and jittered
-    /// afresh, so the expectation is POV-Ray's: the average shading of the grid times the
-    /// visibility of its side.
+    /// the points light. Each point is as likely to be shaded as any other, its jitter
+    /// uniform over its cell (and stratified over the pixel's samples:
+    /// [`crate::render::sampler::CellJitter`]), so the expectation is POV-Ray's: the
+    /// average shading of the grid times the visibility of its side.
     fn grid_light(
         &self,
         s: &Shading,
@@ -215,7 +216,7 @@ impl Integrator<'_> {
             .dimension(s.path.block(), Purpose::LightShading(index as u32));
         sampler.set_dimension(dim);
         let s2 = sampler.get_2d();
-        let mut jitter = sampler.free_stream(dim);
+        let cells = sampler.cell_jitter(dim, sampler.index());
         let frame = area.frame(light.location, light.location - p);
         // Where one shadow ray is exact (a one-ray pixel), a small grid is shaded whole:
         // what is left of the sample's noise is then its position in the pixel.
@@ -229,7 +230,8 @@ impl Integrator<'_> {
         // with the incidence of one of them (the side shadow rays start from).
         let mut sides = [(DVec3::ZERO, None); 2];
         let mut shade = |k: u32| {
-            let at = area.point_at(&frame, k, (jitter.next_f64(), jitter.next_f64()));
+            let jitter = if area.jitter { cells.at(k) } else { (0.5, 0.5) };
+            let at = area.point_at(&frame, k, jitter);
             let Some(incidence) = light.incidence_from(p, at) else {
                 return;
             };
@@ -661,6 +663,9 @@ fn caustics_at(scene: &PreparedScene, ray: &Ray, hit: &Hit, material: &Material)
 /// - unbiased: pi(k) is any block with equal chance, and over the blocks each point counts
 ///   R times its weight, a 1/N share of it on average per block, block length R/N.
 ///
+/// A jittered point's R tests in the pixel, one per turn, are stratified over its cell
+/// ([`crate::render::sampler::CellJitter`]).
+///
 /// Each sample tests about K / min(N, C) + 1 points of a K-point grid.
 fn cover_grid(
     q: &ShadowQuery,
@@ -678,7 +683,8 @@ fn cover_grid(
     );
     let (start, end) = (start as u64, end as u64);
     let order = sampler.pixel_seed(dim, 0);
-    let mut jitter = sampler.free_stream(dim);
+    let mut cells_round = (start / WeightOrder::TOTAL) as u32;
+    let mut cells = sampler.cell_jitter(dim, cells_round);
     let frame = area.frame(q.light.location, q.light.location - q.p);
     let mut sum = DVec3::ZERO;
     let mut at = start;
@@ -689,7 +695,10 @@ fn cover_grid(
             .stretch_at(at, order ^ round.wrapping_mul(0x85eb_ca6b));
         let to = stretch_end.min(end);
         let offset = if area.jitter {
-            (jitter.next_f64(), jitter.next_f64())
+            if round != cells_round {
+                (cells, cells_round) = (sampler.cell_jitter(dim, round), round);
+            }
+            cells.at(point)
         } else {
             (0.5, 0.5)
         };
