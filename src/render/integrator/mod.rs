@@ -253,6 +253,9 @@ pub struct Integrator<'a> {
     /// agreed: one shadow ray per area light is exact there, so it stands in for POV-Ray's
     /// `adaptive` rule too, whose corner rays would agree as well ([`Self::one_ray`]).
     one_ray: bool,
+    /// Whether every sample shades a small area_illumination grid whole
+    /// ([`direct::WHOLE_GRID_FROM_SPP`]).
+    whole_grid: bool,
 }
 
 /// `+Q` levels: from these on, POV-Ray shows diffuse light, shadows, area lights, and
@@ -296,6 +299,10 @@ impl<'a> Integrator<'a> {
             camera_interiors: camera_interiors(scene),
             photons: None,
             one_ray: false,
+            whole_grid: options
+                .average_spp
+                .unwrap_or(f64::from(options.samples_per_pixel))
+                >= direct::WHOLE_GRID_FROM_SPP,
         }
     }
 
@@ -998,13 +1005,20 @@ mod tests {
 
     /// A plane under `light`, shaded along one ray from above at sample `index` of `spp` by
     /// the integrator with one shadow ray per area light (a one-ray pixel's with
-    /// `one_ray`): the colour and the shadow rays sent.
-    fn shade_floor(light: &str, (index, spp): (u32, u32), one_ray: bool) -> (DVec3, u64) {
+    /// `one_ray`) of a render of one sample per pixel (`spp` with `budget`): the colour
+    /// and the shadow rays sent.
+    fn shade_floor(
+        light: &str,
+        (index, spp): (u32, u32),
+        one_ray: bool,
+        budget: bool,
+    ) -> (DVec3, u64) {
         let src = format!("plane {{ y, 0 pigment {{ rgb 0.8 }} finish {{ phong 0.6 }} }} {light}");
         let loaded = crate::lang::load_scene_source("t.pov", &src, &Default::default());
         let scene = PreparedScene::new(&loaded.expect("scene loads").scene);
         let options = RenderOptions {
             light_samples: LightSamples::Fixed(1),
+            samples_per_pixel: if budget { spp } else { 1 },
             ..RenderOptions::default()
         };
         let integrator = Integrator::new(&scene, &options);
@@ -1027,8 +1041,8 @@ mod tests {
     fn one_ray_pixels_take_one_shadow_ray_for_an_adaptive_light() {
         let light = "light_source { <0, 5, 0> rgb 1 area_light <2, 0, 0>, <0, 0, 2>, 9, 9
             adaptive 1 }";
-        let (rule, rule_rays) = shade_floor(light, (0, 1), false);
-        let (one, one_rays) = shade_floor(light, (0, 1), true);
+        let (rule, rule_rays) = shade_floor(light, (0, 1), false, false);
+        let (one, one_rays) = shade_floor(light, (0, 1), true, false);
         assert!(rule_rays >= 4, "the adaptive rule's corners: {rule_rays}");
         assert_eq!(one_rays, 1);
         assert!(
@@ -1039,21 +1053,22 @@ mod tests {
     }
 
     /// A one-ray pixel shades a small area_illumination grid whole: every sample sees the
-    /// grid's average, where a sample elsewhere shades a few points spread over it.
+    /// grid's average, where a sample elsewhere shades a few points spread over it in a
+    /// render of one sample per pixel; from 1.25 samples per pixel on, every sample shades
+    /// it whole.
     #[test]
     fn one_ray_pixels_shade_a_small_grid_whole() {
         let light = "light_source { <0, 2, 0> rgb 1 area_light <6, 0, 0>, <0, 0, 2>, 7, 3
             area_illumination on }";
-        let first = shade_floor(light, (0, 8), true).0;
+        let first = shade_floor(light, (0, 8), true, false).0;
         for index in 1..8 {
-            assert_eq!(
-                shade_floor(light, (index, 8), true).0,
-                first,
-                "sample {index}"
-            );
+            for (one_ray, budget) in [(true, false), (true, true), (false, true)] {
+                let c = shade_floor(light, (index, 8), one_ray, budget).0;
+                assert_eq!(c, first, "sample {index}, {one_ray} {budget}");
+            }
         }
         let spread: Vec<DVec3> = (0..8)
-            .map(|i| shade_floor(light, (i, 8), false).0)
+            .map(|i| shade_floor(light, (i, 8), false, false).0)
             .collect();
         assert!(spread.iter().any(|&c| c != spread[0]), "{spread:?}");
         // The spread samples average to the grid's whole shading: 8 samples of 7 points
