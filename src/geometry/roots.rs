@@ -58,20 +58,41 @@ pub fn pair_from_q(q: f64, a: f64, c: f64) -> Roots {
     r
 }
 
+/// Horner's rule from 0: the same operations in the same order whatever the length, the
+/// commonest lengths (a quartic's and its derivatives') written out, as the loop over a
+/// slice of unknown length was a fifth of the roots' instructions.
 fn eval(coef: &[f64], t: f64) -> f64 {
-    coef.iter().fold(0.0, |acc, &c| acc * t + c)
+    let h = |acc: f64, c: f64| acc * t + c;
+    match *coef {
+        [a, b, c, d, e] => h(h(h(h(h(0.0, a), b), c), d), e),
+        [a, b, c, d] => h(h(h(h(0.0, a), b), c), d),
+        [a, b, c] => h(h(h(0.0, a), b), c),
+        _ => coef.iter().fold(0.0, |acc, &c| h(acc, c)),
+    }
 }
 
 /// Roots in [lo, hi] of the polynomial with coefficients `coef` (highest degree first,
 /// degree at most 4).
 pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
+    let mut out = Roots::default();
+    roots_until(coef, lo, hi, |t| {
+        out.push(t);
+        true
+    });
+    out
+}
+
+/// The roots of [`roots_in`] given to `take` in increasing order until it returns false:
+/// a ray that wants its first crossing ahead (or any before a shadow ray's end) stops
+/// there, and the pieces after it are never searched. The roots given are those
+/// `roots_in` finds, bit for bit.
+pub fn roots_until(coef: &[f64], lo: f64, hi: f64, mut take: impl FnMut(f64) -> bool) {
     // Drop leading zeros.
     let start = coef.iter().position(|&c| c != 0.0).unwrap_or(coef.len());
     let coef = &coef[start..];
     let degree = coef.len().saturating_sub(1);
-    let mut out = Roots::default();
     if degree == 0 {
-        return out;
+        return;
     }
     if degree <= 2 {
         let r = if degree == 2 {
@@ -80,11 +101,11 @@ pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
             quadratic(0.0, coef[0], coef[1])
         };
         for &t in r.as_slice() {
-            if t >= lo && t <= hi {
-                out.push(t);
+            if t >= lo && t <= hi && !take(t) {
+                return;
             }
         }
-        return out;
+        return;
     }
     // Critical points split [lo, hi] into monotone pieces with at most one root each.
     let mut derivative = [0.0; 4];
@@ -92,8 +113,7 @@ pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {
         derivative[i] = c * (degree - i) as f64;
     }
     let critical = roots_in(&derivative[..degree], lo, hi);
-    monotone_roots(coef, lo, hi, critical.as_slice(), |t| out.push(t));
-    out
+    monotone_roots(coef, lo, hi, critical.as_slice(), take);
 }
 
 /// Up to seven roots, sorted, without allocation (for the degree-6 polynomials of lathes
@@ -137,35 +157,56 @@ pub fn roots_in_wide(coef: &[f64], lo: f64, hi: f64) -> WideRoots {
         derivative[i] = c * (degree - i) as f64;
     }
     let critical = roots_in_wide(&derivative[..degree], lo, hi);
-    monotone_roots(coef, lo, hi, critical.as_slice(), |t| out.push(t));
+    monotone_roots(coef, lo, hi, critical.as_slice(), |t| {
+        out.push(t);
+        true
+    });
     out
 }
 
 /// The roots in [lo, hi] of a polynomial whose sorted critical points there are `critical`:
 /// one per monotone piece between them, in increasing order, a root shared by two pieces
-/// given once.
-fn monotone_roots(coef: &[f64], lo: f64, hi: f64, critical: &[f64], mut push: impl FnMut(f64)) {
+/// given once, until `push` returns false.
+fn monotone_roots(
+    coef: &[f64],
+    lo: f64,
+    hi: f64,
+    critical: &[f64],
+    mut push: impl FnMut(f64) -> bool,
+) {
+    // The derivative's coefficients, for the Newton steps of every piece.
+    let degree = coef.len() - 1;
+    let mut derivative = [0.0; 7];
+    for (i, c) in coef[..degree].iter().enumerate() {
+        derivative[i] = c * (degree - i) as f64;
+    }
+    let derivative = &derivative[..degree];
     let mut last: Option<f64> = None;
+    // False once `push` has asked to stop.
     let mut piece = |a: f64, b: f64| {
-        if let Some(t) = monotone_root(coef, a, b)
+        if let Some(t) = monotone_root(coef, derivative, a, b)
             && last.is_none_or(|l| (t - l).abs() > 1e-12 * t.abs().max(1.0))
         {
-            push(t);
             last = Some(t);
+            return push(t);
         }
+        true
     };
     let mut a = lo;
     for &c in critical {
         if c > a {
-            piece(a, c);
+            if !piece(a, c) {
+                return;
+            }
             a = c;
         }
     }
     piece(a, hi);
 }
 
-/// The root of a polynomial that is monotone on [a, b], if its sign changes there.
-fn monotone_root(coef: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
+/// The root of a polynomial that is monotone on [a, b], if its sign changes there
+/// (`derivative`: its derivative's coefficients).
+fn monotone_root(coef: &[f64], derivative: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
     let mut fa = eval(coef, a);
     let fb = eval(coef, b);
     if fa == 0.0 {
@@ -177,7 +218,6 @@ fn monotone_root(coef: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
     if fa.signum() == fb.signum() {
         return None;
     }
-    let degree = coef.len() - 1;
     let mut t = 0.5 * (a + b);
     for _ in 0..100 {
         let f = eval(coef, t);
@@ -191,10 +231,7 @@ fn monotone_root(coef: &[f64], mut a: f64, mut b: f64) -> Option<f64> {
             b = t;
         }
         // A Newton step, kept only if it stays inside the bracket.
-        let df = coef[..degree]
-            .iter()
-            .enumerate()
-            .fold(0.0, |acc, (i, c)| acc * t + c * (degree - i) as f64);
+        let df = eval(derivative, t);
         let newton = t - f / df;
         let tolerance = 1e-15 * (a.abs() + b.abs()).max(1e-300);
         if df != 0.0 && newton > a && newton < b {
@@ -225,6 +262,33 @@ mod tests {
         assert_eq!(r.len, 4);
         for (got, want) in r.as_slice().iter().zip([1.0, 2.0, 3.0, 4.0]) {
             assert!((got - want).abs() < 1e-12, "{got} vs {want}");
+        }
+    }
+
+    /// `roots_until` gives `roots_in`'s roots, bit for bit and in order, and stops when
+    /// told: (t - 1)(t - 2)(t - 3)(t - 4) and a quartic of two close roots.
+    #[test]
+    fn roots_until_gives_the_same_roots_and_stops() {
+        for (p, lo, hi) in [
+            ([1.0, -10.0, 35.0, -50.0, 24.0], -10.0, 10.0),
+            ([1.0, -2.001, 2.001, -2.001, 1.001], 0.0, 5.0),
+            ([0.0, 1.0, -6.0, 11.0, -6.0], 0.5, 2.5),
+        ] {
+            let all = roots_in(&p, lo, hi);
+            let mut given = Vec::new();
+            roots_until(&p, lo, hi, |t| {
+                given.push(t);
+                true
+            });
+            assert_eq!(given, all.as_slice(), "{p:?}");
+            for stop in 1..=all.len {
+                let mut taken = Vec::new();
+                roots_until(&p, lo, hi, |t| {
+                    taken.push(t);
+                    taken.len() < stop
+                });
+                assert_eq!(taken, all.as_slice()[..stop], "{p:?} stopping after {stop}");
+            }
         }
     }
 
