@@ -981,13 +981,14 @@ fn allocate(pixels: &[AdaptivePixel], average: f64, floor_share: u32) -> Vec<u32
         .iter()
         .map(|p| p.cost * (full(p) - f64::from(floor(p))))
         .sum();
-    let weight = |p: &AdaptivePixel| p.change / p.cost.sqrt();
-    let spent: f64 = pixels.iter().map(|p| weight(p) * p.cost).sum();
+    // Weights change / sqrt(cost), so that time shares go as change x sqrt(cost).
+    let spent: f64 = pixels.iter().map(|p| p.change * p.cost.sqrt()).sum();
+    let scale = time / spent;
     pixels
         .iter()
         .map(|p| {
             if spent > 0.0 {
-                floor(p) + (time * weight(p) / spent).round() as u32
+                floor(p) + (scale * p.change / p.cost.sqrt()).round() as u32
             } else {
                 // No change anywhere: the whole count (a fractional average's floor).
                 full(p) as u32
