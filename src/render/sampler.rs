@@ -415,18 +415,25 @@ mod tests {
                     (unshift(u, step.0), unshift(v, step.1))
                 })
                 .collect();
-            for a in 0..=3 {
-                let (cols, rows) = (1u32 << a, 1u32 << (3 - a));
-                let mut hits = vec![0u32; 8];
-                for &(u, v) in &points {
-                    hits[((v * f64::from(rows)) as u32 * cols + (u * f64::from(cols)) as u32)
-                        as usize] += 1;
-                }
-                assert!(
-                    hits.iter().all(|&h| h == 1),
-                    "cell {cell}, {cols}x{rows}: {hits:?}"
-                );
+            assert_net(&points, &format!("cell {cell}"));
+        }
+    }
+
+    /// `points` (2^k of them) are a (0, k, 2)-net: every 2^a x 2^(k - a) grid has one of
+    /// them in each cell.
+    fn assert_net(points: &[(f64, f64)], what: &str) {
+        let k = points.len().trailing_zeros();
+        for a in 0..=k {
+            let (cols, rows) = (1u32 << a, 1u32 << (k - a));
+            let mut hits = vec![0u32; points.len()];
+            for &(u, v) in points {
+                let cell = (v * f64::from(rows)) as u32 * cols + (u * f64::from(cols)) as u32;
+                hits[cell as usize] += 1;
             }
+            assert!(
+                hits.iter().all(|&h| h == 1),
+                "{what}, grid {cols}x{rows}: {hits:?}"
+            );
         }
     }
 
@@ -547,19 +554,7 @@ mod tests {
                 s.set_position(x, y, seed, i + 1);
                 points.push(s.pixel_position());
             }
-            let k = (later + 1).trailing_zeros();
-            for a in 0..=k {
-                let (cols, rows) = (1u32 << a, 1u32 << (k - a));
-                let mut hits = vec![0u32; (cols * rows) as usize];
-                for &(u, v) in &points {
-                    hits[((v * f64::from(rows)) as u32 * cols + (u * f64::from(cols)) as u32)
-                        as usize] += 1;
-                }
-                assert!(
-                    hits.iter().all(|&h| h == 1),
-                    "1 + {later} samples, grid {cols}x{rows}: {hits:?}"
-                );
-            }
+            assert_net(&points, &format!("1 + {later} samples"));
         }
     }
 
