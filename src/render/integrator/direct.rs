@@ -227,7 +227,9 @@ impl Integrator<'_> {
             .dimension(s.path.block(), Purpose::LightShading(index as u32));
         sampler.set_dimension(dim);
         let s2 = sampler.get_2d();
-        let cells = sampler.cell_jitter(dim, sampler.index());
+        let cells = area
+            .jitter
+            .then(|| sampler.cell_jitter(dim, sampler.index()));
         let frame = area.frame(light.location, light.location - p);
         // Where one shadow ray is exact (a one-ray pixel), a small grid is shaded whole:
         // what is left of the sample's noise is then its position in the pixel. From a
@@ -243,7 +245,7 @@ impl Integrator<'_> {
         // with the incidence of one of them (the side shadow rays start from).
         let mut sides = [(DVec3::ZERO, None); 2];
         let mut shade = |k: u32| {
-            let jitter = if area.jitter { cells.at(k) } else { (0.5, 0.5) };
+            let jitter = cells.map_or((0.5, 0.5), |c| c.at(k));
             let at = area.point_at(&frame, k, jitter);
             let Some(incidence) = light.incidence_from(p, at) else {
                 return;
@@ -696,8 +698,8 @@ fn cover_grid(
     );
     let (start, end) = (start as u64, end as u64);
     let order = sampler.pixel_seed(dim, 0);
-    let mut cells_round = (start / WeightOrder::TOTAL) as u32;
-    let mut cells = sampler.cell_jitter(dim, cells_round);
+    // A jittered light's cell jitters for the turn being tested, drawn when it begins.
+    let mut cells = None;
     let frame = area.frame(q.light.location, q.light.location - q.p);
     let mut sum = DVec3::ZERO;
     let mut at = start;
@@ -708,10 +710,12 @@ fn cover_grid(
             .stretch_at(at, order ^ round.wrapping_mul(0x85eb_ca6b));
         let to = stretch_end.min(end);
         let offset = if area.jitter {
-            if round != cells_round {
-                (cells, cells_round) = (sampler.cell_jitter(dim, round), round);
-            }
-            cells.at(point)
+            let jitter = match cells {
+                Some((r, jitter)) if r == round => jitter,
+                _ => sampler.cell_jitter(dim, round),
+            };
+            cells = Some((round, jitter));
+            jitter.at(point)
         } else {
             (0.5, 0.5)
         };
