@@ -112,8 +112,9 @@ pub fn roots_until(coef: &[f64], lo: f64, hi: f64, mut take: impl FnMut(f64) -> 
     for (i, c) in coef[..degree].iter().enumerate() {
         derivative[i] = c * (degree - i) as f64;
     }
-    let critical = roots_in(&derivative[..degree], lo, hi);
-    monotone_roots(coef, lo, hi, critical.as_slice(), take);
+    let derivative = &derivative[..degree];
+    let critical = roots_in(derivative, lo, hi);
+    monotone_roots(coef, derivative, (lo, hi), critical.as_slice(), take);
 }
 
 /// Up to seven roots, sorted, without allocation (for the degree-6 polynomials of lathes
@@ -156,31 +157,26 @@ pub fn roots_in_wide(coef: &[f64], lo: f64, hi: f64) -> WideRoots {
     for (i, c) in coef[..degree].iter().enumerate() {
         derivative[i] = c * (degree - i) as f64;
     }
-    let critical = roots_in_wide(&derivative[..degree], lo, hi);
-    monotone_roots(coef, lo, hi, critical.as_slice(), |t| {
+    let derivative = &derivative[..degree];
+    let critical = roots_in_wide(derivative, lo, hi);
+    monotone_roots(coef, derivative, (lo, hi), critical.as_slice(), |t| {
         out.push(t);
         true
     });
     out
 }
 
-/// The roots in [lo, hi] of a polynomial whose sorted critical points there are `critical`:
-/// one per monotone piece between them, in increasing order, a root shared by two pieces
-/// given once, until `push` returns false.
+/// The roots in [lo, hi] of a polynomial whose sorted critical points there are `critical`
+/// (the roots of `derivative`, whose coefficients serve every piece's Newton steps): one
+/// per monotone piece between them, in increasing order, a root shared by two pieces given
+/// once, until `push` returns false.
 fn monotone_roots(
     coef: &[f64],
-    lo: f64,
-    hi: f64,
+    derivative: &[f64],
+    (lo, hi): (f64, f64),
     critical: &[f64],
     mut push: impl FnMut(f64) -> bool,
 ) {
-    // The derivative's coefficients, for the Newton steps of every piece.
-    let degree = coef.len() - 1;
-    let mut derivative = [0.0; 7];
-    for (i, c) in coef[..degree].iter().enumerate() {
-        derivative[i] = c * (degree - i) as f64;
-    }
-    let derivative = &derivative[..degree];
     let mut last: Option<f64> = None;
     // False once `push` has asked to stop.
     let mut piece = |a: f64, b: f64| {

@@ -572,6 +572,7 @@ impl AdaptiveScene {
 /// area_illumination, whose light is jittered, 3% higher. No floor at all lost at 16 spp
 /// (checker 0.00180, csg_operations 0.00401).
 const FLOOR_SHARE: u32 = 4;
+/// [`FLOOR_SHARE`] for scenes without hidden noise.
 const PLAIN_FLOOR_SHARE: u32 = 8;
 
 /// Whether a sample's value varies, beyond its position in the pixel, in ways that the
