@@ -1329,18 +1329,31 @@ mod tests {
                 // From the first crossing, as a shadow or reflected ray leaves the surface.
                 ray = Ray::new(ray.at(all.values[0]), dir);
             }
-            let all = torus.all_hits(&ray, &no_tables());
-            for t_max in [0.3, 0.6, 0.9, f64::INFINITY] {
-                let want = all
-                    .as_slice()
-                    .iter()
-                    .copied()
-                    .find(|&t| t > 0.0 && t < t_max);
-                assert_eq!(torus.intersect(&ray, t_max, &no_tables()), want, "{ray:?}");
-                hits += usize::from(want.is_some());
-            }
+            hits += first_hit_is_first_crossing(&torus, &ray, &no_tables(), [0.3, 0.6, 0.9]);
         }
         assert!(hits > 3000, "{hits} hits");
+    }
+
+    /// Asserts that `shape`'s first hit along `ray` before each of `t_max` and infinity is
+    /// the first of its crossings there; how many of those hits there were.
+    fn first_hit_is_first_crossing(
+        shape: &ShapeKind,
+        ray: &Ray,
+        tables: &ShapeTables,
+        t_max: [f64; 3],
+    ) -> usize {
+        let all = shape.all_hits(ray, tables);
+        let mut hits = 0;
+        for t_max in t_max.into_iter().chain([f64::INFINITY]) {
+            let want = all
+                .as_slice()
+                .iter()
+                .copied()
+                .find(|&t| t > 0.0 && t < t_max);
+            assert_eq!(shape.intersect(ray, t_max, tables), want, "{ray:?}");
+            hits += usize::from(want.is_some());
+        }
+        hits
     }
 
     #[test]
@@ -1454,16 +1467,7 @@ mod tests {
             for _ in 0..10 {
                 let mut v = || DVec3::new(next(), next(), next()) * 4.0 - DVec3::splat(2.0);
                 let ray = Ray::new(v(), v());
-                let all = quartic.all_hits(&ray, &tables);
-                for t_max in [0.2, 0.5, 1.0, f64::INFINITY] {
-                    let want = all
-                        .as_slice()
-                        .iter()
-                        .copied()
-                        .find(|&t| t > 0.0 && t < t_max);
-                    assert_eq!(quartic.intersect(&ray, t_max, &tables), want, "{ray:?}");
-                    hits += usize::from(want.is_some());
-                }
+                hits += first_hit_is_first_crossing(&quartic, &ray, &tables, [0.2, 0.5, 1.0]);
             }
         }
         assert!(hits > 1000, "{hits} hits");
