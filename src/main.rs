@@ -428,6 +428,33 @@ fn parse_declare(s: &str) -> Result<(String, f64), String> {
 }
 
 fn main() -> ExitCode {
+    if let Some(missing) = missing_cpu_feature() {
+        eprintln!(
+            "error: this penumbra was built for x86-64-v2 processors (.cargo/config.toml), and \
+             this processor lacks {missing}; rebuild with RUSTFLAGS=\"-C target-cpu=x86-64\""
+        );
+        return ExitCode::FAILURE;
+    }
+    run_main()
+}
+
+/// The instruction set the build assumes (.cargo/config.toml) that this processor lacks,
+/// checked before any code that may use it runs.
+fn missing_cpu_feature() -> Option<&'static str> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if !std::arch::is_x86_feature_detected!("sse4.2") {
+            return Some("SSE4.2");
+        }
+        if !std::arch::is_x86_feature_detected!("popcnt") {
+            return Some("POPCNT");
+        }
+    }
+    None
+}
+
+#[inline(never)]
+fn run_main() -> ExitCode {
     // A reader that stops early (`penumbra compare ... | head`) closes the pipe: end quietly,
     // as other command-line tools do, instead of panicking in `println!`.
     // SAFETY: sets a signal's disposition to the default before any thread starts.
