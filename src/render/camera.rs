@@ -178,7 +178,7 @@ fn omnimax(dh: DVec3, rh: DVec3, uh: DVec3, aspect: f64, x: f64, y: f64) -> Opti
 /// before, scenes/focal_blur.pov (16 samples) at 160x120, 1024 spp: sqrt(B) 0.00255 ->
 /// 0.00126, RMSE 0.0058 -> 0.0039; at 640x480 the bias 0.0055 -> 0.0034.
 const HEX_CELL: f64 = 0.2875;
-/// Beyond 37 samples POV-Ray's blur is no longer a hexagon (a disc of clumps, from
+/// Beyond 37 samples POV-Ray's lens is another (at 64 and more a disc of clumps, from
 /// samples placed at random): the uniform disc fitted by RMSE against POV-Ray renders
 /// (camera/focalblur.pov, 120 samples, passes with sqrt(B) = 0.0010).
 const DISC_RADIUS: f64 = 0.25;
