@@ -514,7 +514,7 @@ impl PreparedArea {
                 ((a - b) * colour).abs().element_sum() > 0.1
             }
             fn rect(
-                get: &mut dyn FnMut(usize, usize) -> DVec3,
+                get: &mut impl FnMut(usize, usize) -> DVec3,
                 (u1, v1, u2, v2): (usize, usize, usize, usize),
                 level: u32,
                 limit: u32,
