@@ -164,8 +164,6 @@ fn omnimax(dh: DVec3, rh: DVec3, uh: DVec3, aspect: f64, x: f64, y: f64) -> Opti
     Some(dir)
 }
 
-/// Focal blur: the ray from a point of the lens through where the pinhole ray meets the
-/// focal plane.
 /// The lens of up to 37 `blur_samples` in POV-Ray 3.7, measured from the blur of a small
 /// bright sphere far out of focus (its image is the lens's shape, point-mirrored): a grid of
 /// 7, 19 or 37 rectangular cells (1, 2 or 3 rings: up to 7, 19 and 37 samples), in rows
@@ -221,6 +219,8 @@ fn lens_offset(camera: &Camera, lens: (f64, f64)) -> (f64, f64) {
     (0.0, 0.0)
 }
 
+/// Focal blur: the ray from a point of the lens through where the pinhole ray meets the
+/// focal plane.
 fn blurred(camera: &Camera, origin: DVec3, dir: DVec3, lens: (f64, f64)) -> Ray {
     let forward = unit(camera.direction, DVec3::Z);
     let focus_distance = (camera.focal_point - origin).dot(forward);
