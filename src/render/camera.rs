@@ -164,25 +164,26 @@ fn omnimax(dh: DVec3, rh: DVec3, uh: DVec3, aspect: f64, x: f64, y: f64) -> Opti
     Some(dir)
 }
 
-/// The lens of up to 37 `blur_samples` in POV-Ray 3.7, measured from the blur of a small
-/// bright sphere far out of focus (its image is the lens's shape, point-mirrored): a grid of
-/// 7, 19 or 37 rectangular cells (1, 2 or 3 rings: up to 7, 19 and 37 samples), in rows
-/// along `right` of 2k + 1 - |r| cells for r in -k..=k, each cell jittered whole, so that
-/// the lens is uniform over a stepped hexagon. A cell is HEX_CELL x aperture / (k + 1)
-/// wide (measured 0.561, 0.571 and 0.575 at aperture 2 for k = 1, 2, 3) and sqrt(3)/2 of
-/// that high (measured 0.90, 0.90, 0.88). With fewer samples than cells every cell is
-/// still met (8 samples of the 19-cell grid light all 19), so the lens a pixel converges
-/// to is the whole grid. Against the uniform disc of radius aperture/4 that was fitted
-/// before, scenes/focal_blur.pov (16 samples) at 160x120, 1024 spp: sqrt(B) 0.00255 ->
-/// 0.00126, RMSE 0.0058 -> 0.0039; at 640x480 the bias 0.0055 -> 0.0034.
+/// POV-Ray 3.7's lens for 7, 19 and 37 `blur_samples`, measured from the blur of a small
+/// bright sphere far out of focus (its image is the lens's shape, point-mirrored): a
+/// hexagonal grid of 7, 19 or 37 rectangular cells (1, 2 or 3 rings), in rows along
+/// `right` of 2k + 1 - |r| cells for r in -k..=k, each cell jittered whole, so that the
+/// lens is uniform over a stepped hexagon. A cell is HEX_CELL x aperture / (k + 1) wide
+/// (measured 0.561, 0.571 and 0.575 at aperture 2 for k = 1, 2, 3) and sqrt(3)/2 of that
+/// high (measured 0.90, 0.90, 0.88). scenes/focal_blur.pov with those counts converges to
+/// POV-Ray's image (160x120, 1024 spp: sqrt(B) 0.0000, 0.00025, 0.00068). Other counts up to
+/// 37 take the next grid: POV-Ray's lens for them is as many jittered squares placed
+/// unevenly, a different shape for each count, which the grid only approximates (the
+/// scene as it is, 16 samples: sqrt(B) 0.00126, against 0.00255 with the disc fitted
+/// before; 640x480, bias 0.0055 -> 0.0034).
 const HEX_CELL: f64 = 0.2875;
 /// Beyond 37 samples POV-Ray's lens is another (at 64 and more a disc of clumps, from
 /// samples placed at random): the uniform disc fitted by RMSE against POV-Ray renders
 /// (camera/focalblur.pov, 120 samples, passes with sqrt(B) = 0.0010).
 const DISC_RADIUS: f64 = 0.25;
 
-/// The rings of POV-Ray's hexagonal lens grid for `blur_samples` ([`HEX_CELL`]); `None`
-/// beyond 37.
+/// The rings of the hexagonal lens grid for `blur_samples` ([`HEX_CELL`]: exact at 7, 19
+/// and 37, the nearest shape measured between); `None` beyond 37.
 fn hex_rings(blur_samples: u32) -> Option<i32> {
     match blur_samples {
         0..=7 => Some(1),
