@@ -353,10 +353,11 @@ mod tests {
         .resolve()
     }
 
-    /// POV-Ray's lens for up to 37 samples: an equal share in each cell of its grid (rows of
-    /// 2k + 1 - |r| cells along right, sqrt(3)/2 as high as wide), nothing outside them.
+    /// The lens for up to 37 samples (POV-Ray's own at 7, 19 and 37): an equal share in
+    /// each cell of its grid (rows of 2k + 1 - |r| cells along right, sqrt(3)/2 as high as
+    /// wide), nothing outside them.
     #[test]
-    fn the_lens_fills_povrays_hexagonal_grid_evenly() {
+    fn the_lens_fills_its_hexagonal_grid_evenly() {
         for (samples, k) in [(1, 1), (7, 1), (16, 2), (19, 2), (20, 3), (37, 3)] {
             let camera = blur_camera(samples);
             let w = HEX_CELL * 2.0 / f64::from(k + 1);
