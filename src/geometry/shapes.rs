@@ -1306,10 +1306,6 @@ mod tests {
         assert!(!torus.inside(DVec3::ZERO, &no_tables()));
     }
 
-    /// Every crossing of a torus is found, the bounds' shortcut included: the roots of
-    /// random rays (from outside and inside the bounds, aimed near the torus, directions of
-    /// any length) against the sign changes of the torus's implicit function sampled
-    /// densely along them.
     /// The torus's first hit in (0, t_max) is the first of all its crossings there, bit for
     /// bit, for rays from outside and from its surface, with t_max before, between and after
     /// the crossings.
@@ -1356,6 +1352,10 @@ mod tests {
         hits
     }
 
+    /// Every crossing of a torus is found, the bounds' shortcut included: the roots of
+    /// random rays (from outside and inside the bounds, aimed near the torus, directions of
+    /// any length) against the sign changes of the torus's implicit function sampled
+    /// densely along them.
     #[test]
     fn torus_roots_are_its_crossings() {
         use rand::{RngExt, SeedableRng};

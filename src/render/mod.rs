@@ -953,8 +953,8 @@ struct AdaptivePixel {
     keeps_pilot: bool,
 }
 
-/// The samples each pixel takes after the pilot. Every pixel takes a quarter of `spp`
-/// (an eighth in a scene without hidden noise, `floor_share`; at
+/// The samples each pixel takes after the pilot. Every pixel takes 1 / `floor_share` of
+/// `spp` (a quarter, or an eighth in a scene without hidden noise: [`AdaptiveScene`]; at
 /// least one where the pilot sample is left out, near a penumbra: the change around a pixel
 /// is only a sign of its noise, and in an out-of-focus blur eight neighbours of one sample
 /// each can agree by chance), and they share the time the rest would take: pixel i gets n_i

@@ -203,8 +203,9 @@ const CELL: u64 = 0x4345_4c4c_0000_0001;
 /// uniform, and a fixed shift keeps it so), and a pixel's tests of one cell are stratified
 /// over it: shifted modulo 1, a net keeps one point in each of its equal strata of either
 /// axis (the strata shifted with it). Drawn independently, as they were, a cell that a
-/// shadow edge crosses added its full variance at every test: scenes/area_illumination.pov (7 x 3, jittered) at 640x480, RMSE at 2 / 4
-/// / 8 / 16 spp 0.0062 / 0.0044 / 0.0030 / 0.0021 -> 0.0052 / 0.0034 / 0.0022 / 0.0015.
+/// shadow edge crosses added its full variance at every test: scenes/area_illumination.pov
+/// (7 x 3, jittered) at 640x480, RMSE at 2 / 4 / 8 / 16 spp 0.0062 / 0.0044 / 0.0030 /
+/// 0.0021 -> 0.0052 / 0.0034 / 0.0022 / 0.0015.
 /// The sequence point is computed once for all the cells of a test; a hash per cell
 /// instead of the step cost 6% more time for a little less gain.
 #[derive(Clone, Copy, Debug)]
