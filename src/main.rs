@@ -652,7 +652,7 @@ fn render_job(job: &Job, settings: &JobSettings, resume: &str) -> Result<ExitCod
     for r in reports {
         if !job.quiet {
             eprintln!(
-                "{}: {}x{}, {}, {:.2} s, {} samples, {:.2} M rays/s ({} rays)",
+                "{}: {}x{}, {}, {:.2} s, {} samples, {:.2} M rays/s ({} rays: {} camera, {} shadow, {} secondary)",
                 r.output.display(),
                 r.width,
                 r.height,
@@ -660,7 +660,10 @@ fn render_job(job: &Job, settings: &JobSettings, resume: &str) -> Result<ExitCod
                 r.stats.wall.as_secs_f64(),
                 r.stats.samples,
                 r.stats.rays_per_second() / 1e6,
-                r.stats.rays.total()
+                r.stats.rays.total(),
+                r.stats.rays.camera,
+                r.stats.rays.shadow,
+                r.stats.rays.secondary
             );
         }
         for note in &r.stats.notes {

@@ -6,7 +6,7 @@
 use glam::DVec3;
 
 use super::Ray;
-use super::roots::roots_in_wide;
+use super::roots::{root_bound, roots_in_wide};
 
 /// The highest order POV-Ray accepts.
 pub const MAX_ORDER: usize = 7;
@@ -157,29 +157,6 @@ impl PolyData {
         sum.reverse();
         sum
     }
-}
-
-/// Fujiwara's bound on the size of every root (highest coefficient first): the walk's
-/// bisections then start from an interval the roots need, not from the far reach.
-fn root_bound(coef: &[f64]) -> f64 {
-    let Some(lead) = coef.iter().position(|&c| c != 0.0) else {
-        return 0.0;
-    };
-    let (a, rest) = (coef[lead], &coef[lead + 1..]);
-    let n = rest.len();
-    let bound = rest
-        .iter()
-        .enumerate()
-        .map(|(k, &c)| {
-            let ratio = (c / a).abs();
-            if k + 1 == n {
-                (ratio * 0.5).powf(1.0 / n as f64)
-            } else {
-                ratio.powf(1.0 / (k + 1) as f64)
-            }
-        })
-        .fold(0.0, f64::max);
-    2.0 * bound * (1.0 + 1e-9) + 1e-300
 }
 
 /// p's coordinates raised to 0..=order, per axis in x, y, z.

@@ -71,6 +71,29 @@ fn eval(coef: &[f64], t: f64) -> f64 {
     }
 }
 
+/// Fujiwara's bound on the size of every root (highest coefficient first): the walk's
+/// bisections then start from an interval the roots need, not from the far reach.
+pub fn root_bound(coef: &[f64]) -> f64 {
+    let Some(lead) = coef.iter().position(|&c| c != 0.0) else {
+        return 0.0;
+    };
+    let (a, rest) = (coef[lead], &coef[lead + 1..]);
+    let n = rest.len();
+    let bound = rest
+        .iter()
+        .enumerate()
+        .map(|(k, &c)| {
+            let ratio = (c / a).abs();
+            if k + 1 == n {
+                (ratio * 0.5).powf(1.0 / n as f64)
+            } else {
+                ratio.powf(1.0 / (k + 1) as f64)
+            }
+        })
+        .fold(0.0, f64::max);
+    2.0 * bound * (1.0 + 1e-9) + 1e-300
+}
+
 /// Roots in [lo, hi] of the polynomial with coefficients `coef` (highest degree first,
 /// degree at most 4).
 pub fn roots_in(coef: &[f64], lo: f64, hi: f64) -> Roots {

@@ -2,6 +2,7 @@
 //! over the bounded top-level items, and the unbounded ones (planes, quadrics, inverses)
 //! kept aside.
 
+use std::cell::Cell;
 use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
@@ -642,18 +643,30 @@ impl World {
             return self.instances[k].hit(k as u32, ray, t_max, skip);
         }
         let mut best: Option<Hit> = None;
-        let mut t_best = t_max;
-        self.for_each_hit(item, ray, t_max, skip, &mut |hit| {
-            if hit.t < t_best {
-                t_best = hit.t;
+        let reach = Cell::new(t_max);
+        self.for_each_hit(item, ray, t_max, skip, &reach, &mut |hit| {
+            if hit.t < reach.get() {
+                reach.set(hit.t);
                 best = Some(hit);
             }
         });
         best
     }
 
-    /// Every visible surface crossing of an item in (0, t_max), in no particular order.
-    fn for_each_hit(&self, item: u32, ray: &Ray, t_max: f64, skip: u8, f: &mut dyn FnMut(Hit)) {
+    /// Every visible surface crossing of an item in (0, t_max), in no particular order, but
+    /// those at or beyond `reach`: a nearest-hit query shrinks it to the nearest hit found,
+    /// so that a CSG node tests no point beyond it against its other children (wood_18's
+    /// intersections of a box and two cylinders: three quarters of their crossings lie
+    /// behind the first).
+    fn for_each_hit(
+        &self,
+        item: u32,
+        ray: &Ray,
+        t_max: f64,
+        skip: u8,
+        reach: &Cell<f64>,
+        f: &mut dyn FnMut(Hit),
+    ) {
         let node = match decode(item) {
             Ref::Primitive(i) => return self.primitive_hits(i, ray, t_max, skip, f),
             Ref::Instance(k) => {
@@ -663,22 +676,32 @@ impl World {
         };
         if node.op == CsgOp::Bound {
             if self.ray_meets_bounds(&node.children[1..], ray) {
-                self.for_each_hit(node.children[0], ray, t_max, skip, f);
+                self.for_each_hit(node.children[0], ray, t_max, skip, reach, f);
             }
             return;
         }
         let visit = |i: usize, f: &mut dyn FnMut(Hit)| {
-            self.for_each_hit(node.children[i], ray, t_max, skip, &mut |hit: Hit| {
-                if node.op == CsgOp::Union {
-                    f(hit);
-                } else if self.kept(node, i, ray.at(hit.t)) {
-                    let subtracted = node.op == CsgOp::Difference && i > 0;
-                    f(Hit {
-                        flipped: hit.flipped ^ subtracted ^ node.inverse,
-                        ..hit
-                    });
-                }
-            });
+            self.for_each_hit(
+                node.children[i],
+                ray,
+                t_max,
+                skip,
+                reach,
+                &mut |hit: Hit| {
+                    if hit.t >= reach.get() {
+                        return;
+                    }
+                    if node.op == CsgOp::Union {
+                        f(hit);
+                    } else if self.kept(node, i, ray.at(hit.t)) {
+                        let subtracted = node.op == CsgOp::Difference && i > 0;
+                        f(Hit {
+                            flipped: hit.flipped ^ subtracted ^ node.inverse,
+                            ..hit
+                        });
+                    }
+                },
+            );
         };
         match &node.index {
             // Only the children whose boxes the ray meets can be hit.
@@ -951,8 +974,9 @@ impl World {
         visit: &mut dyn FnMut(&Hit) -> bool,
     ) -> bool {
         let mut open = true;
+        let everywhere = Cell::new(f64::INFINITY);
         let mut each = |item: u32| {
-            self.for_each_hit(item, ray, t_max, skip, &mut |hit| {
+            self.for_each_hit(item, ray, t_max, skip, &everywhere, &mut |hit| {
                 if open && !visit(&hit) {
                     open = false;
                 }

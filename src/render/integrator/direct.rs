@@ -43,6 +43,38 @@ use crate::render::fog::{Segment, light_through_fog};
 /// are told apart from crossings at the same distance.
 const MAX_CROSSINGS: usize = 32;
 
+/// Lights whose shadow a shading point keeps for its texture's later layers.
+const MEMO_LIGHTS: usize = 4;
+
+/// The shadow filters found at one shading point, per light and side of the surface: the
+/// same for every texture layer (the shadow query depends on the light, the point and the
+/// side, and an area light's jitter on the sample, none of them on the layer), so a layered
+/// texture traces a light's shadow rays once, as POV-Ray does, not once per layer. Measured:
+/// incdemo/woods/wood_18.pov (two layers) traced 116,852 shadow rays at 320x240, one
+/// sample, where POV-Ray tests 58,481.
+#[derive(Default)]
+pub(super) struct ShadowMemo {
+    /// Bit 2 * light + side: that filter is known.
+    known: u8,
+    filters: [DVec3; 2 * MEMO_LIGHTS],
+}
+
+impl ShadowMemo {
+    /// The filter of light `index` on `side` (1: the side the normal does not face), from
+    /// the memo or from `find`, which it then keeps.
+    fn filter(&mut self, index: usize, flipped: bool, find: impl FnOnce() -> DVec3) -> DVec3 {
+        if index >= MEMO_LIGHTS {
+            return find();
+        }
+        let slot = 2 * index + usize::from(flipped);
+        if self.known >> slot & 1 == 0 {
+            self.filters[slot] = find();
+            self.known |= 1 << slot;
+        }
+        self.filters[slot]
+    }
+}
+
 /// One texture layer as the lights see it.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct ShadedLayer<'f> {
@@ -146,6 +178,7 @@ impl Integrator<'_> {
         &self,
         s: &Shading,
         layer: &ShadedLayer,
+        memo: &mut ShadowMemo,
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
@@ -154,9 +187,14 @@ impl Integrator<'_> {
             if !LightGroup::lights(light.group, s.material.light_group) {
                 continue;
             }
+            let lit = Lit {
+                layer,
+                index,
+                memo: &mut *memo,
+            };
             colour += match self.summed_grid(light) {
-                Some(area) => self.grid_light(s, layer, index, area, sampler, counts),
-                None => self.one_light(s, layer, index, sampler, counts),
+                Some(area) => self.grid_light(s, lit, area, sampler, counts),
+                None => self.one_light(s, lit, sampler, counts),
             };
         }
         colour
@@ -175,11 +213,11 @@ impl Integrator<'_> {
     fn one_light(
         &self,
         s: &Shading,
-        layer: &ShadedLayer,
-        index: usize,
+        lit: Lit,
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
+        let Lit { layer, index, memo } = lit;
         let light = &self.scene.lights[index];
         let Some(incidence) = self.incidence(s, light, index as u32, sampler) else {
             return DVec3::ZERO;
@@ -192,9 +230,11 @@ impl Integrator<'_> {
         if colour == DVec3::ZERO {
             return DVec3::ZERO;
         }
-        let side = facing.flipped.then_some(incidence.l);
-        let query = self.shadow_query(s, index, side, colour);
-        let filter = self.shadowed(&query, &incidence, sampler, counts);
+        let filter = memo.filter(index, facing.flipped, || {
+            let side = facing.flipped.then_some(incidence.l);
+            let query = self.shadow_query(s, index, side, colour);
+            self.shadowed(&query, &incidence, sampler, counts)
+        });
         if filter == DVec3::ZERO {
             return DVec3::ZERO;
         }
@@ -213,12 +253,12 @@ impl Integrator<'_> {
     fn grid_light(
         &self,
         s: &Shading,
-        layer: &ShadedLayer,
-        index: usize,
+        lit: Lit,
         area: &PreparedArea,
         sampler: &mut PixelSampler,
         counts: &mut RayCounts,
     ) -> DVec3 {
+        let Lit { layer, index, memo } = lit;
         let light = &self.scene.lights[index];
         let p = s.surface.point;
         let back_lit = layer.finish.diffuse_back != 0.0;
@@ -270,9 +310,12 @@ impl Integrator<'_> {
         let mut colour = DVec3::ZERO;
         for (flipped, (sum, incidence)) in sides.into_iter().enumerate() {
             if let Some(incidence) = incidence.filter(|_| sum != DVec3::ZERO) {
-                let side = (flipped == 1).then_some(incidence.l);
-                let query = self.shadow_query(s, index, side, centre);
-                colour += sum * self.shadowed(&query, &incidence, sampler, counts);
+                colour += sum
+                    * memo.filter(index, flipped == 1, || {
+                        let side = (flipped == 1).then_some(incidence.l);
+                        let query = self.shadow_query(s, index, side, centre);
+                        self.shadowed(&query, &incidence, sampler, counts)
+                    });
             }
         }
         colour / f64::from(points)
@@ -620,6 +663,13 @@ impl Integrator<'_> {
         }
         filter
     }
+}
+
+/// One light shading one texture layer, and the shadows found for the layers before.
+struct Lit<'l, 'f> {
+    layer: &'l ShadedLayer<'f>,
+    index: usize,
+    memo: &'l mut ShadowMemo,
 }
 
 /// A light along `l` (unit) as the shading point sees it, or `None` where it does not

@@ -450,6 +450,7 @@ impl<'a> Integrator<'a> {
         let mut top: Option<(Colour, &Finish)> = None;
         // What the layers together reflect diffusely, for radiosity.
         let mut diffuse = radiosity::Albedo::default();
+        let mut memo = direct::ShadowMemo::default();
         if self.quality < QUALITY_LIGHTING {
             // POV-Ray's quick colours: the pigment, fully lit.
             return layers.next().map_or(DVec3::ZERO, |l| l.colour.rgb);
@@ -461,7 +462,7 @@ impl<'a> Integrator<'a> {
                 finish: layer.finish,
                 att: c.opacity(self.scene.legacy),
             };
-            colour += through * self.surface_light(s, &shaded, sampler, counts);
+            colour += through * self.surface_light(s, &shaded, &mut memo, sampler, counts);
             if self.photons.is_some() && shaded.finish.diffuse * shaded.att != 0.0 {
                 let b = layer.finish.brilliance;
                 let e = match caustic {
@@ -1013,7 +1014,19 @@ mod tests {
         one_ray: bool,
         budget: bool,
     ) -> (DVec3, u64) {
-        let src = format!("plane {{ y, 0 pigment {{ rgb 0.8 }} finish {{ phong 0.6 }} }} {light}");
+        let texture = "pigment { rgb 0.8 } finish { phong 0.6 }";
+        shade_textured_floor(texture, light, (index, spp), one_ray, budget)
+    }
+
+    /// [`shade_floor`] with the plane's `texture`.
+    fn shade_textured_floor(
+        texture: &str,
+        light: &str,
+        (index, spp): (u32, u32),
+        one_ray: bool,
+        budget: bool,
+    ) -> (DVec3, u64) {
+        let src = format!("plane {{ y, 0 {texture} }} {light}");
         let loaded = crate::lang::load_scene_source("t.pov", &src, &Default::default());
         let scene = PreparedScene::new(&loaded.expect("scene loads").scene);
         let options = RenderOptions {
@@ -1032,6 +1045,29 @@ mod tests {
         sampler.start(1, 2, index, 9);
         let colour = integrator.radiance(&ray, &mut sampler, &mut counts);
         (colour, counts.shadow)
+    }
+
+    /// A layered texture's layers share the shadow rays of each light: one for a point
+    /// light and one per light sample for a jittered area light, as for one layer (the
+    /// shadow does not depend on the layer; POV-Ray tests a light once per point).
+    #[test]
+    fn texture_layers_share_their_shadow_rays() {
+        let one = "pigment { rgb 0.8 } finish { phong 0.6 }";
+        let two = "texture { pigment { rgb 0.8 } }
+            texture { pigment { rgbt <0.9, 0.2, 0.1, 0.5> } finish { phong 0.6 } }";
+        for light in [
+            "light_source { <0, 5, 0> rgb 1 }",
+            "light_source { <0, 5, 0> rgb 1 area_light <2, 0, 0>, <0, 0, 2>, 4, 4 jitter }",
+        ] {
+            let (single, single_rays) = shade_textured_floor(one, light, (0, 1), false, false);
+            let (layered, layered_rays) = shade_textured_floor(two, light, (0, 1), false, false);
+            assert!(single_rays >= 1, "{light}: no shadow ray");
+            assert_eq!(layered_rays, single_rays, "{light}");
+            assert!(
+                layered.x > single.x && layered.z < single.z,
+                "{layered} {single}"
+            );
+        }
     }
 
     /// Under a fully visible `adaptive` area light, POV-Ray's rule tests the grid's corners
