@@ -194,33 +194,44 @@ fn value_gradient_noise_seeded(p: DVec3, seed: u32) -> f64 {
 
 impl LatticeCell {
     /// Value-gradient noise under `seed`: each corner's value and gradient components come
-    /// from four hashes of its lattice hash, computed eight corners at a time (the
-    /// compiler vectorises the array's hashes; corner by corner they were a third of a
-    /// cloudy sky's render).
+    /// from four hashes of its lattice hash. Computed as arrays over the eight corners,
+    /// each element with the same operations in the same order as corner by corner, so
+    /// that the compiler vectorises the hashes, the conversions and the products (corner
+    /// by corner they were a third of a cloudy sky's render); the sum stays in corner order.
     #[inline]
     fn value_gradient(&self, seed: u32) -> f64 {
         let (i, j, k) = self.corner;
-        let f = self.f;
-        let w = [DVec3::ONE - self.fade, self.fade];
         let hashes = corner_hashes(i, j, k, seed);
-        let keyed = |key: u32| hashes.map(|h| hash(h ^ key));
+        let keyed = |key: u32| {
+            let mut out = [0.0; 8];
+            for (o, &h) in out.iter_mut().zip(&hashes) {
+                *o = unit(hash(h ^ key));
+            }
+            out
+        };
         let (value, gx, gy, gz) = (
             keyed(0x68e3_1da4),
             keyed(0xb529_7a4d),
             keyed(0x1b56_c4e9),
             keyed(0x7f4a_7c15),
         );
-        let mut sum = 0.0;
-        for corner in 0..8 {
-            let (dx, dy, dz) = (corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-            let d = f - DVec3::new(dx as f64, dy as f64, dz as f64);
-            let v = VALUE_WEIGHT * unit(value[corner])
-                + unit(gx[corner]) * d.x
-                + unit(gy[corner]) * d.y
-                + unit(gz[corner]) * d.z;
-            sum += w[dx].x * w[dy].y * w[dz].z * v;
+        // Per corner (dx | dy << 1 | dz << 2): its offset and weight along each axis.
+        let along = |f: f64, fade: f64, bit: usize| {
+            let (d, w) = ([f, f - 1.0], [1.0 - fade, fade]);
+            (
+                std::array::from_fn::<f64, 8, _>(|c| d[c >> bit & 1]),
+                std::array::from_fn::<f64, 8, _>(|c| w[c >> bit & 1]),
+            )
+        };
+        let (dx, wx) = along(self.f.x, self.fade.x, 0);
+        let (dy, wy) = along(self.f.y, self.fade.y, 1);
+        let (dz, wz) = along(self.f.z, self.fade.z, 2);
+        let mut term = [0.0; 8];
+        for c in 0..8 {
+            let v = VALUE_WEIGHT * value[c] + gx[c] * dx[c] + gy[c] * dy[c] + gz[c] * dz[c];
+            term[c] = wx[c] * wy[c] * wz[c] * v;
         }
-        sum
+        term.iter().fold(0.0, |sum, t| sum + t)
     }
 }
 

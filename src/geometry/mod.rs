@@ -38,8 +38,8 @@ pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData, plane_hit, s
 pub use superellipsoid::Superellipsoid;
 pub use transform::Transform;
 pub use world::{
-    CsgOp, Hit, Item, MaterialBlend, PREPARED_BYTES_PER_PRIMITIVE, Primitive, SurfacePoint,
-    TexturePoint, World, WorldBuilder, flags,
+    CsgOp, Hit, Item, MaterialBlend, NO_ITEM, PREPARED_BYTES_PER_PRIMITIVE, Primitive,
+    SurfacePoint, TexturePoint, World, WorldBuilder, flags,
 };
 
 /// A deterministic stream of uniform numbers in [0, 1) for tests (xorshift64): rays and

@@ -36,6 +36,8 @@ const CSG_BIT: u32 = 1 << 31;
 const INSTANCE_BIT: u32 = 1 << 30;
 /// A hit on the world's own primitives, not inside an instance.
 pub const NO_INSTANCE: u32 = u32::MAX;
+/// No item (as an item number, the CSG node 2^31 - 1, which no world holds).
+pub const NO_ITEM: u32 = u32::MAX;
 
 /// What an item number names.
 #[derive(Clone, Copy)]
@@ -941,6 +943,44 @@ impl World {
         hit
     }
 
+    /// [`Self::occluded`], testing first the item that stopped the shadow ray before
+    /// (`hint`, which it then updates): the shadow rays from one point towards an area
+    /// light's grid mostly meet the same object, and one item's test replaces a walk of
+    /// the tree. The answer is the same either way.
+    pub fn occluded_hinted(&self, ray: &Ray, t_max: f64, hint: &Cell<u32>) -> bool {
+        let last = hint.get();
+        if last != NO_ITEM && self.item_blocks(last, ray, t_max) {
+            return true;
+        }
+        match self.blocker(ray, t_max) {
+            Some(item) => {
+                hint.set(item);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// The first item found that casts a shadow on the ray within (0, t_max).
+    fn blocker(&self, ray: &Ray, t_max: f64) -> Option<u32> {
+        if let Some(&i) = self
+            .unbounded
+            .iter()
+            .find(|&&i| self.item_blocks(i, ray, t_max))
+        {
+            return Some(i);
+        }
+        let mut hit = None;
+        self.bvh.traverse(ray, t_max, |i, t_cur| {
+            if self.item_blocks(i, ray, t_cur) {
+                hit = Some(i);
+                return None;
+            }
+            Some(t_cur)
+        });
+        hit
+    }
+
     /// Whether an item casts a shadow on the ray within (0, t_max).
     #[inline(always)]
     fn item_blocks(&self, item: u32, ray: &Ray, t_max: f64) -> bool {
@@ -1228,6 +1268,96 @@ mod tests {
             };
             assert_eq!(center.x, x);
         }
+    }
+
+    /// A world of spheres and CSG (intersections and differences of boxes and spheres),
+    /// for comparing queries that must agree.
+    fn csg_cloud() -> (World, impl FnMut() -> f64) {
+        let mut next = crate::geometry::uniform_stream(0x9e37_79b9_7f4a_7c15);
+        let mut b = WorldBuilder::default();
+        for k in 0..60 {
+            let c = DVec3::new(next(), next(), next()) * 20.0 - 10.0;
+            let ball = b.primitive(
+                ShapeKind::Sphere {
+                    center: c,
+                    radius: 0.5 + next(),
+                },
+                &Transform::IDENTITY,
+                0,
+                0,
+            );
+            let item = if k % 3 == 0 {
+                ball
+            } else {
+                let cube = b.primitive(
+                    ShapeKind::Box {
+                        min: c - 1.0,
+                        max: c + DVec3::new(1.0, 0.6, 1.3),
+                    },
+                    &Transform::IDENTITY,
+                    0,
+                    0,
+                );
+                let op = if k % 3 == 1 {
+                    CsgOp::Intersection
+                } else {
+                    CsgOp::Difference
+                };
+                b.csg(op, vec![cube, ball], false)
+            };
+            b.add_top(item);
+        }
+        (b.build(), next)
+    }
+
+    /// The nearest hit, which passes over crossings beyond the nearest found before
+    /// testing them against a CSG node's other children, is the nearest of all the
+    /// crossings, to the bit.
+    #[test]
+    fn nearest_hits_are_the_nearest_crossings() {
+        let (world, mut next) = csg_cloud();
+        let mut met = 0;
+        for _ in 0..4000 {
+            let origin = DVec3::new(next(), next(), next()) * 30.0 - 15.0;
+            let aim = DVec3::new(next(), next(), next()) * 20.0 - 10.0;
+            let ray = Ray::new(origin, aim - origin);
+            let mut nearest = f64::INFINITY;
+            world.crossings(&ray, f64::INFINITY, 0, &mut |hit| {
+                nearest = nearest.min(hit.t);
+                true
+            });
+            let hit = world.intersect(&ray, f64::INFINITY, 0).map(|h| h.t);
+            assert_eq!(hit, (nearest < f64::INFINITY).then_some(nearest), "{ray:?}");
+            met += usize::from(hit.is_some());
+        }
+        assert!(met > 500, "too few rays met anything ({met})");
+    }
+
+    /// A shadow ray that tests first the item that stopped the one before gets the same
+    /// answer as a walk of the tree, whatever the hint, and keeps an item that stops it.
+    #[test]
+    fn hinted_occlusion_agrees_and_keeps_its_blocker() {
+        let (world, mut next) = csg_cloud();
+        let hint = Cell::new(NO_ITEM);
+        let (mut blocked, mut hinted) = (0, 0);
+        let target = DVec3::new(3.0, 2.0, 1.0);
+        for _ in 0..4000 {
+            let origin = DVec3::new(next(), next(), next()) * 30.0 - 15.0;
+            let to = target + DVec3::new(next(), next(), next()) * 4.0 - origin;
+            let ray = Ray::new(origin, to / to.length());
+            let before = hint.get();
+            let answer = world.occluded_hinted(&ray, to.length(), &hint);
+            assert_eq!(answer, world.occluded(&ray, to.length()), "{ray:?}");
+            if answer {
+                blocked += 1;
+                hinted += usize::from(hint.get() == before);
+                assert!(world.item_blocks(hint.get(), &ray, to.length()));
+            }
+        }
+        assert!(
+            blocked > 500 && hinted > 50,
+            "{blocked} blocked, {hinted} by the hint"
+        );
     }
 
     #[test]

@@ -2,13 +2,15 @@
 //! the diffuse term and the highlights, through shadow rays that filter through transparent
 //! objects as POV-Ray's do.
 
+use std::cell::Cell;
+
 use glam::DVec3;
 
 use crate::appearance::finish::{
     diffuse_term, irid_factor, metallic_tint, phong_factor, specular_factor,
 };
 use crate::appearance::{perturbed_normal, texture_layers};
-use crate::geometry::{Hit, Ray, offset_point};
+use crate::geometry::{Hit, NO_ITEM, Ray, offset_point};
 use crate::render::dimensions::Purpose;
 use crate::render::lights::LightSamples;
 use crate::render::lights::{AreaLightMode, GOLDEN, PreparedArea, PreparedLight, WeightOrder};
@@ -430,16 +432,22 @@ impl Integrator<'_> {
         let area = q.light.area.as_ref();
         let Some(area) = area.filter(|_| self.quality >= super::QUALITY_AREA_LIGHTS) else {
             counts.shadow += 1;
-            return self.light_through(q, l, distance);
+            return self.light_through(q, l, distance, None);
         };
         let dim = self
             .layout
             .dimension(q.level, Purpose::LightPosition(q.index));
+        // The item that stopped the last stopped shadow ray towards the grid, tested first
+        // by the next ([`crate::geometry::World::occluded_hinted`]). Measured, bsp/Tango.pov
+        // (an 8 x 8 adaptive area light over a lattice of boxes and CSG), 80x60, one
+        // sample: 2,144 -> 1,471 M instructions; soft_shadow and area_adaptive (160x120,
+        // 4 spp) +0.5% and -2%.
+        let blocker = Cell::new(NO_ITEM);
         let mut shadow_to = |target: DVec3| {
             let to = target - q.origin;
             let dist = to.length();
             counts.shadow += 1;
-            let filter = self.light_through(q, to / dist, dist);
+            let filter = self.light_through(q, to / dist, dist, Some(&blocker));
             counts.area_lit += u64::from(filter != DVec3::ZERO);
             counts.area_shadowed += u64::from(filter != DVec3::ONE);
             filter
@@ -474,7 +482,13 @@ impl Integrator<'_> {
     /// shadow (measured: a box between such a light and its object leaves the projected
     /// spot lit, a box between the object and the wall shadows it; a copy of the object
     /// in the scene, where the ray meets it, does not shadow it).
-    fn light_through(&self, q: &ShadowQuery, l: DVec3, distance: f64) -> DVec3 {
+    fn light_through(
+        &self,
+        q: &ShadowQuery,
+        l: DVec3,
+        distance: f64,
+        hint: Option<&Cell<u32>>,
+    ) -> DVec3 {
         let distance = match &q.light.projected_through {
             None => distance,
             Some(stencil) => match stencil.intersect(&Ray::new(q.origin, l), distance, 0) {
@@ -483,7 +497,7 @@ impl Integrator<'_> {
             },
         };
         let ray = Ray::new(q.origin, l);
-        let filter = self.shadow_filter(&ray, distance * (1.0 - 1e-9), q);
+        let filter = self.shadow_filter(&ray, distance * (1.0 - 1e-9), q, hint);
         if filter == DVec3::ZERO {
             return filter;
         }
@@ -582,16 +596,22 @@ impl Integrator<'_> {
     /// The fraction of light that reaches along a shadow ray: zero at an opaque object, and
     /// `C * filter + transmit` per crossing of a filtering one (no refraction), as POV-Ray.
     /// `q.inside` holds the interiors the ray starts in: those of the ray that was shaded.
-    fn shadow_filter(&self, ray: &Ray, t_max: f64, q: &ShadowQuery) -> DVec3 {
+    fn shadow_filter(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        q: &ShadowQuery,
+        hint: Option<&Cell<u32>>,
+    ) -> DVec3 {
         let inside = &q.inside;
         let photons = &q.light.photons;
         let scene = self.scene;
         if !scene.any_transmitting {
-            return if scene.world.occluded(ray, t_max) {
-                DVec3::ZERO
-            } else {
-                DVec3::ONE
+            let blocked = match hint {
+                Some(hint) => scene.world.occluded_hinted(ray, t_max, hint),
+                None => scene.world.occluded(ray, t_max),
             };
+            return if blocked { DVec3::ZERO } else { DVec3::ONE };
         }
         let mut crossings = Crossings::default();
         let mut filter = DVec3::ONE;
