@@ -925,22 +925,7 @@ impl World {
     /// Whether anything that casts shadows lies on the ray within (0, t_max); stops at the
     /// first hit.
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
-        if self
-            .unbounded
-            .iter()
-            .any(|&i| self.item_blocks(i, ray, t_max))
-        {
-            return true;
-        }
-        let mut hit = false;
-        self.bvh.traverse(ray, t_max, |i, t_cur| {
-            if self.item_blocks(i, ray, t_cur) {
-                hit = true;
-                return None;
-            }
-            Some(t_cur)
-        });
-        hit
+        self.blocker(ray, t_max).is_some()
     }
 
     /// [`Self::occluded`], testing first the item that stopped the shadow ray before
