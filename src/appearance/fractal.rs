@@ -88,15 +88,20 @@ fn has_left(formula: FractalFormula, z: DVec2) -> bool {
 /// The raw value at a pattern-space point (before frequency, phase and the wrap).
 pub fn fractal_value(f: &Fractal, p: glam::DVec3) -> f64 {
     let point = DVec2::new(p.x, p.y);
-    let (c, mut z, mut min_r2) = match (f.julia, f.formula) {
+    let (c, z, min_r2) = match (f.julia, f.formula) {
         (Some(c), _) => (DVec2::from(c), point, point.length_squared()),
         (None, FractalFormula::Power(_)) => (point, point, point.length_squared()),
         (None, _) => (point, DVec2::ZERO, f64::INFINITY),
     };
-    for i in 0..f.max_iteration {
-        z = step(f.formula, z, c);
-        min_r2 = min_r2.min(z.length_squared());
-        if has_left(f.formula, z) {
+    let orbit = match f.formula {
+        // The commonest formula in a loop of its own: the step and the escape test without
+        // a match on the formula at each of up to max_iteration steps (animations/
+        // fractalzoom: mandel 10000, 156 M instructions of 313 M at 40x30).
+        FractalFormula::Power(2) => iterate(f.max_iteration, (z, min_r2), Power2 { c }),
+        formula => iterate(f.max_iteration, (z, min_r2), Any { formula, c }),
+    };
+    let (z, min_r2) = match orbit {
+        Orbit::Left(i, z) => {
             let (kind, factor) = f.exterior;
             return match kind {
                 FractalColouring::Count => f64::from(i) / f64::from(f.max_iteration),
@@ -104,13 +109,71 @@ pub fn fractal_value(f: &Fractal, p: glam::DVec3) -> f64 {
                 _ => common_colouring(kind, factor, z),
             };
         }
-    }
+        Orbit::Stayed(z, min_r2) => (z, min_r2),
+    };
     let (kind, factor) = f.interior;
     match kind {
         FractalColouring::Count => min_r2.sqrt() * factor,
         FractalColouring::Absolute => z.x * z.x + factor * z.y * z.y,
         _ => common_colouring(kind, factor, z),
     }
+}
+
+/// Where an orbit ended: it left at step i with z, or stayed for every step, its last z and
+/// the smallest |z|^2 seen.
+enum Orbit {
+    Left(u32, DVec2),
+    Stayed(DVec2, f64),
+}
+
+/// One formula's step and escape test, for [`iterate`].
+trait Map {
+    fn step(&self, z: DVec2) -> DVec2;
+    fn has_left(&self, z: DVec2) -> bool;
+}
+
+/// z^2 + c, known when compiled.
+struct Power2 {
+    c: DVec2,
+}
+
+impl Map for Power2 {
+    #[inline(always)]
+    fn step(&self, z: DVec2) -> DVec2 {
+        step(FractalFormula::Power(2), z, self.c)
+    }
+    #[inline(always)]
+    fn has_left(&self, z: DVec2) -> bool {
+        has_left(FractalFormula::Power(2), z)
+    }
+}
+
+/// Any formula, chosen at each step.
+struct Any {
+    formula: FractalFormula,
+    c: DVec2,
+}
+
+impl Map for Any {
+    fn step(&self, z: DVec2) -> DVec2 {
+        step(self.formula, z, self.c)
+    }
+    fn has_left(&self, z: DVec2) -> bool {
+        has_left(self.formula, z)
+    }
+}
+
+/// Up to `steps` steps of `map` from z (`min_r2`: the smallest |z|^2 so far).
+#[inline(always)]
+fn iterate(steps: u32, (mut z, mut min_r2): (DVec2, f64), map: impl Map) -> Orbit {
+    for i in 0..steps {
+        z = map.step(z);
+        min_r2 = min_r2.min(z.length_squared());
+        if map.has_left(z) {
+            return Orbit::Left(i, z);
+        }
+    }
+    Orbit::Stayed(z, min_r2)
 }
 
 /// The colourings that read the same inside and outside: of the last z, times the factor.
