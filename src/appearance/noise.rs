@@ -64,33 +64,34 @@ fn corner_hashes(i: i64, j: i64, k: i64, seed: u32) -> [u32; 8] {
 
 /// The twelve cube-edge directions plus four repeats, as in improved Perlin noise: no
 /// axis-aligned gradients, so the noise has no visible grid at its zero crossings. Per
-/// code, the two coordinates summed and their signs: read from a table, where a `match`
-/// on a random hash was a branch mispredicted about half the time at every corner.
-const GRADIENTS: [([usize; 2], [f64; 2]); 16] = [
-    ([0, 1], [1.0, 1.0]),
-    ([0, 1], [-1.0, 1.0]),
-    ([0, 1], [1.0, -1.0]),
-    ([0, 1], [-1.0, -1.0]),
-    ([0, 2], [1.0, 1.0]),
-    ([0, 2], [-1.0, 1.0]),
-    ([0, 2], [1.0, -1.0]),
-    ([0, 2], [-1.0, -1.0]),
-    ([1, 2], [1.0, 1.0]),
-    ([1, 2], [-1.0, 1.0]),
-    ([1, 2], [1.0, -1.0]),
-    ([1, 2], [-1.0, -1.0]),
-    ([0, 1], [1.0, 1.0]),
-    ([1, 2], [-1.0, 1.0]),
-    ([0, 1], [-1.0, 1.0]),
-    ([1, 2], [-1.0, -1.0]),
+/// code, the gradient's components (one of them 0): read from a table, where a `match` on
+/// a random hash was a branch mispredicted about half the time at every corner.
+const GRADIENTS: [[f64; 3]; 16] = [
+    [1.0, 1.0, 0.0],
+    [-1.0, 1.0, 0.0],
+    [1.0, -1.0, 0.0],
+    [-1.0, -1.0, 0.0],
+    [1.0, 0.0, 1.0],
+    [-1.0, 0.0, 1.0],
+    [1.0, 0.0, -1.0],
+    [-1.0, 0.0, -1.0],
+    [0.0, 1.0, 1.0],
+    [0.0, -1.0, 1.0],
+    [0.0, 1.0, -1.0],
+    [0.0, -1.0, -1.0],
+    [1.0, 1.0, 0.0],
+    [0.0, -1.0, 1.0],
+    [-1.0, 1.0, 0.0],
+    [0.0, -1.0, -1.0],
 ];
 
-/// The gradient of code `h` dotted with `d` (a sign times a coordinate is exact, so this
-/// is `x + y`, `-x + y`, `x - y` ... to the last bit).
+/// The gradient of code `h` dotted with `d`: `x + y`, `-x + y`, `x - y` ... to the last
+/// bit, as a sign times a coordinate is exact and the zero component's product (a zero,
+/// as no coordinate of a corner's offset is -0) leaves the sum as it was.
 #[inline]
 fn grad(h: u32, d: [f64; 3]) -> f64 {
-    let ([a, b], [sa, sb]) = GRADIENTS[(h & 15) as usize];
-    sa * d[a] + sb * d[b]
+    let g = GRADIENTS[(h & 15) as usize];
+    g[0] * d[0] + g[1] * d[1] + g[2] * d[2]
 }
 
 /// The cubic s-curve: POV-Ray's noise is smoother than improved Perlin noise's quintic
