@@ -927,7 +927,7 @@ fn quartic_gradient(q: &[f64; 35], p: DVec3) -> DVec3 {
     g
 }
 
-/// The quartic's crossings along the ray, but those at its origin ([`quartic_crossings`]).
+/// The quartic's crossings ahead of the ray's origin, but those at it ([`quartic_crossings`]).
 fn quartic_hits(ray: &Ray, q: &[f64; 35]) -> Roots {
     let mut out = Roots::default();
     quartic_crossings(ray, q, |t| {
@@ -951,9 +951,9 @@ fn quartic_first_hit(ray: &Ray, q: &[f64; 35], t_max: f64) -> Option<f64> {
 }
 
 /// The quartic along the ray as a polynomial in t (each coordinate is linear in t, so each
-/// term is a product of small powers), then its real roots, in increasing order, given to
-/// `take` until it returns false; those within [`QUARTIC_DEPTH_TOLERANCE`] of the origin
-/// are passed over.
+/// term is a product of small powers), then its real roots ahead of the origin, in
+/// increasing order, given to `take` until it returns false; those within
+/// [`QUARTIC_DEPTH_TOLERANCE`] of the origin are passed over.
 fn quartic_crossings(ray: &Ray, q: &[f64; 35], mut take: impl FnMut(f64) -> bool) {
     // powers[axis][n]: (o + t d)^n as coefficients of t^0..t^4.
     let mut powers = [[[0.0f64; 5]; 5]; 3];
@@ -1001,7 +1001,10 @@ fn quartic_crossings(ray: &Ray, q: &[f64; 35], mut take: impl FnMut(f64) -> bool
     // 30 steps a piece on average, most of its render).
     let reach = (1e6 * (ray.origin.length() + 1.0) / d_len).min(root_bound(&coef));
     let tolerance = QUARTIC_DEPTH_TOLERANCE / d_len;
-    roots_until(&coef, -reach, reach, |t| t.abs() <= tolerance || take(t));
+    // Only crossings ahead of the origin are ever used (as every shape's): the search
+    // starts at it rather than a bound behind it, whose pieces would be solved only to be
+    // dropped.
+    roots_until(&coef, 0.0, reach, |t| t <= tolerance || take(t));
 }
 
 /// How close to its origin (in the quartic's own units) a ray ignores the surface. A ray
