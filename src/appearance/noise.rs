@@ -156,44 +156,7 @@ impl LatticeCell {
             ),
         )
     }
-}
 
-/// Gradient noise in about [-1, 1], zero on lattice points.
-pub fn gradient_noise(p: DVec3, seed: u32) -> f64 {
-    LatticeCell::of(p).map_or(0.0, |c| c.gradient(seed))
-}
-
-/// A uniform value in [-1, 1] from a hash.
-#[inline]
-fn unit(h: u32) -> f64 {
-    h as f64 * (2.0 / u32::MAX as f64) - 1.0
-}
-
-/// Value-gradient noise: each lattice corner carries a random value and a random gradient
-/// (components uniform in [-1, 1]), blended with the cubic s-curve.
-pub fn value_gradient_noise(p: DVec3) -> f64 {
-    value_gradient_noise_seeded(p, 0x5eed_0001)
-}
-
-/// Three independent value-gradient noises: the vector that perturbs `bumps`, `dents` and
-/// `wrinkles` normals. With the scalar noise's construction, each component has the
-/// spectrum of POV-Ray's noise, as POV-Ray's vector noise does (docs/appearance.md).
-pub fn value_gradient_vector(p: DVec3) -> DVec3 {
-    let Some(cell) = LatticeCell::of(p) else {
-        return DVec3::ZERO;
-    };
-    DVec3::new(
-        cell.value_gradient(0x0bad_5eed),
-        cell.value_gradient(0x1dea_5eed),
-        cell.value_gradient(0x2fab_5eed),
-    )
-}
-
-fn value_gradient_noise_seeded(p: DVec3, seed: u32) -> f64 {
-    LatticeCell::of(p).map_or(0.0, |c| c.value_gradient(seed))
-}
-
-impl LatticeCell {
     /// Value-gradient noise under `seed`: each corner's value and gradient components come
     /// from four hashes of its lattice hash. Computed as arrays over the eight corners,
     /// each element with the same operations in the same order as corner by corner, so
@@ -234,6 +197,41 @@ impl LatticeCell {
         }
         term.iter().fold(0.0, |sum, t| sum + t)
     }
+}
+
+/// Gradient noise in about [-1, 1], zero on lattice points.
+pub fn gradient_noise(p: DVec3, seed: u32) -> f64 {
+    LatticeCell::of(p).map_or(0.0, |c| c.gradient(seed))
+}
+
+/// A uniform value in [-1, 1] from a hash.
+#[inline]
+fn unit(h: u32) -> f64 {
+    h as f64 * (2.0 / u32::MAX as f64) - 1.0
+}
+
+/// Value-gradient noise: each lattice corner carries a random value and a random gradient
+/// (components uniform in [-1, 1]), blended with the cubic s-curve.
+pub fn value_gradient_noise(p: DVec3) -> f64 {
+    value_gradient_noise_seeded(p, 0x5eed_0001)
+}
+
+/// Three independent value-gradient noises: the vector that perturbs `bumps`, `dents` and
+/// `wrinkles` normals. With the scalar noise's construction, each component has the
+/// spectrum of POV-Ray's noise, as POV-Ray's vector noise does (docs/appearance.md).
+pub fn value_gradient_vector(p: DVec3) -> DVec3 {
+    let Some(cell) = LatticeCell::of(p) else {
+        return DVec3::ZERO;
+    };
+    DVec3::new(
+        cell.value_gradient(0x0bad_5eed),
+        cell.value_gradient(0x1dea_5eed),
+        cell.value_gradient(0x2fab_5eed),
+    )
+}
+
+fn value_gradient_noise_seeded(p: DVec3, seed: u32) -> f64 {
+    LatticeCell::of(p).map_or(0.0, |c| c.value_gradient(seed))
 }
 
 /// POV-Ray's `Noise`: a value in [0, 1] around 0.5.

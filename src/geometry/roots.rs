@@ -71,9 +71,10 @@ fn eval(coef: &[f64], t: f64) -> f64 {
     }
 }
 
-/// A bound on the rounding error of [`eval`] at t: Horner's rule errs by at most 2 n unit
-/// roundoffs of the sum of the terms' magnitudes (Higham, Accuracy and Stability of
-/// Numerical Algorithms, 5.1), here rounded up to 2 n machine epsilons.
+/// A bound on the rounding error of [`eval`] at t: Horner's rule for degree n errs by at
+/// most 2 n unit roundoffs of the sum of the terms' magnitudes (Higham, Accuracy and
+/// Stability of Numerical Algorithms, 5.1); this takes 2 (n + 1) machine epsilons, twice
+/// that and more.
 fn rounding_error(coef: &[f64], t: f64) -> f64 {
     let at = t.abs();
     let size = coef.iter().fold(0.0, |acc, &c| acc * at + c.abs());
