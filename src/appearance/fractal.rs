@@ -126,7 +126,8 @@ enum Orbit {
     Stayed(DVec2, f64),
 }
 
-/// One formula's step and escape test, for [`iterate`].
+/// One formula's step and escape test, for [`iterate`]. (The same loop given two closures
+/// instead measured 17% slower: fractalzoom at 320x240 1.88-1.89 s against 1.61-1.65 s.)
 trait Map {
     fn step(&self, z: DVec2) -> DVec2;
     fn has_left(&self, z: DVec2) -> bool;
