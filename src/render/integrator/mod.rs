@@ -450,11 +450,12 @@ impl<'a> Integrator<'a> {
         let mut top: Option<(Colour, &Finish)> = None;
         // What the layers together reflect diffusely, for radiosity.
         let mut diffuse = radiosity::Albedo::default();
-        let mut memo = direct::ShadowMemo::default();
         if self.quality < QUALITY_LIGHTING {
             // POV-Ray's quick colours: the pigment, fully lit.
             return layers.next().map_or(DVec3::ZERO, |l| l.colour.rgb);
         }
+        // Each light's shadow, found for the first layer that needs it, serves the others.
+        let mut memo = direct::ShadowMemo::default();
         for layer in layers {
             let c = layer.colour;
             let shaded = ShadedLayer {
