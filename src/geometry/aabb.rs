@@ -21,6 +21,12 @@ impl Aabb {
         max: DVec3::splat(f64::NEG_INFINITY),
     };
 
+    /// Everywhere: the extent of a solid unbounded every way.
+    pub const INFINITE: Aabb = Aabb {
+        min: DVec3::splat(f64::NEG_INFINITY),
+        max: DVec3::splat(f64::INFINITY),
+    };
+
     pub fn new(a: DVec3, b: DVec3) -> Aabb {
         Aabb {
             min: a.min(b),
@@ -72,6 +78,41 @@ impl Aabb {
                 if i & 4 == 0 { self.min.z } else { self.max.z },
             );
             out = out.grow(t.point(c));
+        }
+        out
+    }
+
+    pub fn intersection(&self, o: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.max(o.min),
+            max: self.max.min(o.max),
+        }
+    }
+
+    /// The box as a bound: `None` where a side is open (infinite) and the box not empty.
+    pub fn bounded(self) -> Option<Aabb> {
+        (self.is_finite() || self.is_empty()).then_some(self)
+    }
+
+    /// [`Aabb::transformed`] for a box that may have infinite sides: those stay infinite
+    /// under a transform that takes each axis exactly onto an axis (scales, translations,
+    /// swaps of axes; a turn by a right angle leaves a rounding error off the axis, which
+    /// an infinite side would spread everywhere); under any other the box is everywhere.
+    pub fn transformed_extent(&self, t: &super::Transform) -> Aabb {
+        if self.is_finite() || self.is_empty() {
+            return self.transformed(t);
+        }
+        let (m, shift) = (t.forward.matrix3, t.forward.translation);
+        let mut out = Aabb::INFINITE;
+        for axis in 0..3 {
+            let column = m.col(axis);
+            let onto: Vec<usize> = (0..3).filter(|&j| column[j] != 0.0).collect();
+            let [j] = onto[..] else {
+                return Aabb::INFINITE;
+            };
+            let (a, b) = (self.min[axis] * column[j], self.max[axis] * column[j]);
+            out.min[j] = a.min(b) + shift[j];
+            out.max[j] = a.max(b) + shift[j];
         }
         out
     }

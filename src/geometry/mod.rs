@@ -34,7 +34,9 @@ pub use poly::{MAX_ORDER as POLY_MAX_ORDER, PolyData, term_count as poly_term_co
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use revolve::{LatheData, SorData};
-pub use shapes::{PolygonData, ShapeKind, ShapeTables, TriangleData, plane_hit, sphere_first_hit};
+pub use shapes::{
+    LineInside, PolygonData, ShapeKind, ShapeTables, TriangleData, plane_hit, sphere_first_hit,
+};
 pub use superellipsoid::Superellipsoid;
 pub use transform::Transform;
 pub use world::{

@@ -229,6 +229,74 @@ impl ShapeKind {
         }
     }
 
+    /// Where the line lies inside the solid, for the convex solids whose span along a line
+    /// is quick to find (an intersection or a clip keeps no crossing outside it).
+    pub fn line_inside(&self, ray: &Ray, tables: &ShapeTables) -> LineInside {
+        match *self {
+            ShapeKind::Sphere { center, radius } => {
+                LineInside::from_roots(&sphere_roots(ray, center, radius))
+            }
+            ShapeKind::Plane { normal, distance } => {
+                // n.(o + t d) < distance
+                let (at_origin, rate) =
+                    (normal.dot(ray.origin) - distance, normal.dot(ray.direction));
+                LineInside::below(at_origin, rate)
+            }
+            ShapeKind::Box { min, max } => box_crossings(ray, min, max)
+                .map_or(LineInside::Never, |[(a, _), (b, _)]| {
+                    LineInside::Between(a, b)
+                }),
+            ShapeKind::Quadric(i) => {
+                let q = &tables.quadrics[i as usize];
+                // Convex where its quadratic form is: no cross terms, no negative square.
+                if q[3] != 0.0 || q[4] != 0.0 || q[5] != 0.0 || q[..3].iter().any(|&c| c < 0.0) {
+                    return LineInside::Unknown;
+                }
+                let (qa, qb, qc) = quadric_along(ray, q);
+                if qa == 0.0 {
+                    LineInside::below(qc, qb)
+                } else {
+                    LineInside::from_roots(&quadratic(qa, qb, qc))
+                }
+            }
+            _ => LineInside::Unknown,
+        }
+    }
+
+    /// [`ShapeKind::each_hit_part`], but a shape that searches for its crossings (a
+    /// quartic) searches only `within` (the caller keeps only crossings there).
+    pub fn each_hit_part_within(
+        &self,
+        ray: &Ray,
+        tables: &ShapeTables,
+        within: (f64, f64),
+        mut f: impl FnMut(f64, u32),
+    ) {
+        if let ShapeKind::Quartic(i) = *self {
+            quartic_crossings_within(ray, &tables.quartics[i as usize], within, |t| {
+                f(t, 0);
+                true
+            });
+        } else {
+            self.each_hit_part(ray, tables, f);
+        }
+    }
+
+    /// Object-space bounds of the solid with infinite sides where it is unbounded (a
+    /// plane's half-space, a cylinder's axis), so that an intersection or a clip of
+    /// unbounded shapes can have a box (shapesq.inc's quartics, clipped by a cylinder and
+    /// two planes, were tested by every ray).
+    pub fn extent(&self, tables: &ShapeTables) -> Aabb {
+        if let Some(b) = self.bounds(tables) {
+            return b;
+        }
+        match *self {
+            ShapeKind::Plane { normal, distance } => half_space_extent(normal, distance),
+            ShapeKind::Quadric(i) => quadric_extent(&tables.quadrics[i as usize]),
+            _ => Aabb::INFINITE,
+        }
+    }
+
     /// Nearest hit distance in (0, t_max), in units of the ray's direction (which need not
     /// be normalised, so the same `t` holds in object and world space).
     #[inline]
@@ -835,6 +903,101 @@ fn torus_span(o: DVec3, dir: DVec3, major: f64, minor: f64) -> Option<(f64, f64)
     (enter <= leave).then_some((enter, leave))
 }
 
+/// Where a line lies inside a solid ([`ShapeKind::line_inside`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LineInside {
+    /// Not found for this shape.
+    Unknown,
+    /// Nowhere.
+    Never,
+    /// Between these distances (either may be infinite).
+    Between(f64, f64),
+}
+
+impl LineInside {
+    /// Inside between two roots (a convex solid's crossings), nowhere with fewer.
+    fn from_roots(roots: &Roots) -> LineInside {
+        match *roots.as_slice() {
+            [a, b] => LineInside::Between(a, b),
+            _ => LineInside::Never,
+        }
+    }
+
+    /// Where `at_origin + rate t` is below zero.
+    fn below(at_origin: f64, rate: f64) -> LineInside {
+        let t = -at_origin / rate;
+        if rate > 0.0 {
+            LineInside::Between(f64::NEG_INFINITY, t)
+        } else if rate < 0.0 {
+            LineInside::Between(t, f64::INFINITY)
+        } else if at_origin < 0.0 {
+            LineInside::Between(f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            LineInside::Never
+        }
+    }
+}
+
+/// The half-space n.p <= d where n lies along an axis; otherwise everywhere.
+fn half_space_extent(normal: DVec3, distance: f64) -> Aabb {
+    let axes: Vec<usize> = (0..3).filter(|&k| normal[k] != 0.0).collect();
+    let [k] = axes[..] else {
+        return Aabb::INFINITE;
+    };
+    let mut out = Aabb::INFINITE;
+    let bound = distance / normal[k];
+    let bound = bound + pad(bound) * normal[k].signum();
+    if normal[k] > 0.0 {
+        out.max[k] = bound;
+    } else {
+        out.min[k] = bound;
+    }
+    out
+}
+
+/// A little more than the rounding of a bound computed at `v`.
+fn pad(v: f64) -> f64 {
+    1e-9 * (v.abs() + 1.0)
+}
+
+/// The box around a quadric's solid (value < 0) without cross terms: along each axis with
+/// a positive square term the solid is an ellipse's or ellipsoid's extent, along an axis
+/// without any term it is unbounded (a cylinder), and with a negative square term or a
+/// linear term alone (cones, hyperboloids, paraboloids) everywhere.
+fn quadric_extent(q: &[f64; 10]) -> Aabb {
+    let [a, b, c, d, e, f, g, h, i, j] = *q;
+    if d != 0.0 || e != 0.0 || f != 0.0 {
+        return Aabb::INFINITE;
+    }
+    let terms = [(a, g), (b, h), (c, i)];
+    if terms
+        .iter()
+        .any(|&(sq, lin)| sq < 0.0 || (sq == 0.0 && lin != 0.0))
+    {
+        return Aabb::INFINITE;
+    }
+    // sum sq (x + lin / 2 sq)^2 < r: the completed squares.
+    let r = terms
+        .iter()
+        .filter(|t| t.0 > 0.0)
+        .map(|&(sq, lin)| lin * lin / (4.0 * sq))
+        .sum::<f64>()
+        - j;
+    if r <= 0.0 {
+        return Aabb::EMPTY;
+    }
+    let mut out = Aabb::INFINITE;
+    for (k, &(sq, lin)) in terms.iter().enumerate() {
+        if sq > 0.0 {
+            let (centre, half) = (-lin / (2.0 * sq), (r / sq).sqrt());
+            let slack = pad(centre.abs() + half);
+            out.min[k] = centre - half - slack;
+            out.max[k] = centre + half + slack;
+        }
+    }
+    out
+}
+
 fn quadric_value(q: &[f64; 10], p: DVec3) -> f64 {
     let [a, b, c, d, e, f, g, h, i, j] = *q;
     a * p.x * p.x
@@ -850,6 +1013,12 @@ fn quadric_value(q: &[f64; 10], p: DVec3) -> f64 {
 }
 
 fn quadric_hits(ray: &Ray, q: &[f64; 10]) -> Roots {
+    let (qa, qb, qc) = quadric_along(ray, q);
+    quadratic(qa, qb, qc)
+}
+
+/// The quadric along the ray: qa t^2 + qb t + qc.
+fn quadric_along(ray: &Ray, q: &[f64; 10]) -> (f64, f64, f64) {
     let [a, b, c, d, e, f, g, h, i, _] = *q;
     let (o, v) = (ray.origin, ray.direction);
     let qa = a * v.x * v.x
@@ -865,8 +1034,7 @@ fn quadric_hits(ray: &Ray, q: &[f64; 10]) -> Roots {
         + g * v.x
         + h * v.y
         + i * v.z;
-    let qc = quadric_value(q, o);
-    quadratic(qa, qb, qc)
+    (qa, qb, quadric_value(q, o))
 }
 
 /// The exponents (x, y, z) of the 35 terms of a quartic, in POV-Ray's order.
@@ -954,7 +1122,17 @@ fn quartic_first_hit(ray: &Ray, q: &[f64; 35], t_max: f64) -> Option<f64> {
 /// term is a product of small powers), then its real roots ahead of the origin, in
 /// increasing order, given to `take` until it returns false; those within
 /// [`QUARTIC_DEPTH_TOLERANCE`] of the origin are passed over.
-fn quartic_crossings(ray: &Ray, q: &[f64; 35], mut take: impl FnMut(f64) -> bool) {
+fn quartic_crossings(ray: &Ray, q: &[f64; 35], take: impl FnMut(f64) -> bool) {
+    quartic_crossings_within(ray, q, (0.0, f64::INFINITY), take);
+}
+
+/// [`quartic_crossings`] searched only within (lo, hi) (lo at least 0).
+fn quartic_crossings_within(
+    ray: &Ray,
+    q: &[f64; 35],
+    (lo, hi): (f64, f64),
+    mut take: impl FnMut(f64) -> bool,
+) {
     // powers[axis][n]: (o + t d)^n as coefficients of t^0..t^4.
     let mut powers = [[[0.0f64; 5]; 5]; 3];
     for (axis, p) in powers.iter_mut().enumerate() {
@@ -1004,7 +1182,10 @@ fn quartic_crossings(ray: &Ray, q: &[f64; 35], mut take: impl FnMut(f64) -> bool
     // Only crossings ahead of the origin are ever used (as every shape's): the search
     // starts at it rather than a bound behind it, whose pieces would be solved only to be
     // dropped.
-    roots_until(&coef, 0.0, reach, |t| t <= tolerance || take(t));
+    let (lo, hi) = (lo.max(0.0), hi.min(reach));
+    if lo < hi {
+        roots_until(&coef, lo, hi, |t| t <= tolerance || take(t));
+    }
 }
 
 /// How close to its origin (in the quartic's own units) a ray ignores the surface. A ray
@@ -1566,5 +1747,106 @@ mod tests {
         assert_eq!(through(0.5, 0.5), Some(1.0));
         assert_eq!(through(2.0, 2.0), None);
         assert_eq!(through(5.0, 2.0), None);
+    }
+
+    /// The convex solids' spans along a line hold every point of the line inside them,
+    /// and points well within a span are inside; non-convex quadrics give no span.
+    #[test]
+    fn line_inside_is_where_the_line_is_inside() {
+        let mut next = crate::geometry::uniform_stream(0x2545_f491_4f6c_dd1d);
+        let mut v = |s: f64| DVec3::new(next(), next(), next()) * (2.0 * s) - s;
+        let tables = ShapeTables {
+            quadrics: vec![
+                [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0],
+                [1.0, 0.5, 2.0, 0.0, 0.0, 0.0, 0.4, 0.0, -0.3, -1.5],
+                [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0],
+                [1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0],
+            ],
+            ..ShapeTables::default()
+        };
+        let shapes = [
+            sphere(DVec3::new(0.3, -0.2, 0.1), 1.3),
+            ShapeKind::Plane {
+                normal: DVec3::new(0.6, 0.0, 0.8),
+                distance: 0.4,
+            },
+            ShapeKind::Box {
+                min: DVec3::new(-1.0, -0.5, -2.0),
+                max: DVec3::new(1.5, 0.5, 1.0),
+            },
+            ShapeKind::Quadric(0),
+            ShapeKind::Quadric(1),
+            ShapeKind::Quadric(2),
+        ];
+        assert_eq!(
+            ShapeKind::Quadric(3).line_inside(&Ray::new(DVec3::ZERO, DVec3::X), &tables),
+            LineInside::Unknown
+        );
+        let mut inside_points = 0;
+        for shape in &shapes {
+            for _ in 0..2000 {
+                let ray = Ray::new(v(4.0), v(1.0));
+                let span = shape.line_inside(&ray, &tables);
+                for k in 0..50 {
+                    let t = -8.0 + 0.33 * f64::from(k);
+                    let p = ray.at(t);
+                    let within = |margin: f64| match span {
+                        LineInside::Between(a, b) => t > a - margin && t < b + margin,
+                        LineInside::Never => false,
+                        LineInside::Unknown => panic!("{shape:?} has a span"),
+                    };
+                    if shape.inside(p, &tables) {
+                        inside_points += 1;
+                        assert!(within(1e-9), "{shape:?} {ray:?} t {t}: {span:?}");
+                    } else {
+                        assert!(!within(-1e-6), "{shape:?} {ray:?} t {t}: {span:?}");
+                    }
+                }
+            }
+        }
+        assert!(inside_points > 50_000, "{inside_points}");
+    }
+
+    /// A quadric's and a half-space's extents hold every point of their solid, and a
+    /// cylinder's is open along its axis only.
+    #[test]
+    fn extents_hold_their_solids() {
+        let mut next = crate::geometry::uniform_stream(0x9e37_79b9_7f4a_7c15);
+        let tables = ShapeTables {
+            quadrics: vec![
+                [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -4.0],
+                [2.0, 0.5, 3.0, 0.0, 0.0, 0.0, 1.0, -0.4, 0.3, -1.0],
+                [1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0],
+            ],
+            ..ShapeTables::default()
+        };
+        let cylinder = ShapeKind::Quadric(0).extent(&tables);
+        assert_eq!((cylinder.min.x, cylinder.max.y), (-2.0 - 3e-9, 2.0 + 3e-9));
+        assert!(cylinder.min.z.is_infinite() && cylinder.max.z.is_infinite());
+        assert_eq!(ShapeKind::Quadric(2).extent(&tables), Aabb::INFINITE);
+        let half = ShapeKind::Plane {
+            normal: DVec3::new(0.0, -1.0, 0.0),
+            distance: 0.5,
+        };
+        let slanted = ShapeKind::Plane {
+            normal: DVec3::new(0.0, 0.6, 0.8),
+            distance: 0.5,
+        };
+        assert_eq!(slanted.extent(&tables), Aabb::INFINITE);
+        let mut held = 0;
+        for shape in [ShapeKind::Quadric(0), ShapeKind::Quadric(1), half] {
+            let extent = shape.extent(&tables);
+            for _ in 0..20_000 {
+                let p = DVec3::new(next(), next(), next()) * 8.0 - 4.0;
+                if shape.inside(p, &tables) {
+                    held += 1;
+                    assert!(
+                        p.cmpge(extent.min).all() && p.cmple(extent.max).all(),
+                        "{shape:?}: {p} outside {extent:?}"
+                    );
+                }
+            }
+        }
+        assert!(held > 15_000, "{held}");
     }
 }

@@ -7,7 +7,9 @@ use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 
-use super::{Aabb, Bvh, Ray, ShapeKind, ShapeTables, Transform, plane_hit, sphere_first_hit};
+use super::{
+    Aabb, Bvh, LineInside, Ray, ShapeKind, ShapeTables, Transform, plane_hit, sphere_first_hit,
+};
 
 /// Per-primitive flags, tested as a mask so each kind of ray can skip some.
 pub mod flags {
@@ -527,64 +529,55 @@ impl World {
     }
 
     fn item_bounds(&self, item: u32) -> Option<Aabb> {
+        self.item_extent(item).bounded()
+    }
+
+    /// The box around an item's solid, its sides infinite where the solid is unbounded
+    /// that way: an intersection or a clip of unbounded children can be bounded.
+    fn item_extent(&self, item: u32) -> Aabb {
         let node = match decode(item) {
-            Ref::Primitive(i) => return self.primitive_bounds(&self.primitives[i]),
-            Ref::Instance(k) => return self.instances[k].bounds(),
+            Ref::Primitive(i) => return self.primitive_extent(&self.primitives[i]),
+            Ref::Instance(k) => return self.instances[k].bounds().unwrap_or(Aabb::INFINITE),
             Ref::Csg(k) => &self.csg[k],
         };
         if node.inverse {
-            return None;
+            return Aabb::INFINITE;
         }
-        let mut children = node.children.iter().map(|&c| self.item_bounds(c));
+        let mut children = node.children.iter().map(|&c| self.item_extent(c));
         match node.op {
-            CsgOp::Union | CsgOp::Merge => {
-                children.try_fold(Aabb::EMPTY, |acc, b| Some(acc.union(&b?)))
-            }
-            CsgOp::Difference => children.next().flatten(),
+            CsgOp::Union | CsgOp::Merge => children.fold(Aabb::EMPTY, |acc, b| acc.union(&b)),
+            CsgOp::Difference => children.next().unwrap_or(Aabb::INFINITE),
             // POV-Ray bounds the object by its bounds' box (as `max_extent` shows), and
             // its traversal then culls by that box too; only quartics and polys keep
             // their bounds, and those are unbounded themselves.
             CsgOp::Bound => {
-                let own = children.next().flatten();
+                let own = children.next().unwrap_or(Aabb::INFINITE);
                 let bounds = node.children[1..]
                     .iter()
                     .map(|&c| self.item_bounds(c))
                     .try_fold(None, |acc: Option<Aabb>, b| {
                         let b = b?;
-                        Some(Some(acc.map_or(b, |a| Aabb {
-                            min: a.min.max(b.min),
-                            max: a.max.min(b.max),
-                        })))
+                        Some(Some(acc.map_or(b, |a| a.intersection(&b))))
                     })
                     .flatten();
-                bounds.or(own)
+                bounds.unwrap_or(own)
             }
+            // Each child limits the whole.
             CsgOp::Intersection | CsgOp::Clip => {
-                // Each bounded child limits the whole; unbounded ones do not.
-                let mut acc: Option<Aabb> = None;
-                for b in children.flatten() {
-                    acc = Some(match acc {
-                        None => b,
-                        Some(a) => Aabb {
-                            min: a.min.max(b.min),
-                            max: a.max.min(b.max),
-                        },
-                    });
-                }
-                acc
+                children.fold(Aabb::INFINITE, |acc, b| acc.intersection(&b))
             }
         }
     }
 
-    fn primitive_bounds(&self, p: &Primitive) -> Option<Aabb> {
+    fn primitive_extent(&self, p: &Primitive) -> Aabb {
         if p.flags & flags::INVERSE != 0 {
-            return None;
+            return Aabb::INFINITE;
         }
-        let b = p.shape.bounds(&self.tables)?;
-        Some(match p.transform {
-            NO_TRANSFORM => b,
-            t => b.transformed(&self.transforms[t as usize]),
-        })
+        let extent = p.shape.extent(&self.tables);
+        match p.transform {
+            NO_TRANSFORM => extent,
+            t => extent.transformed_extent(&self.transforms[t as usize]),
+        }
     }
 
     #[inline]
@@ -646,7 +639,7 @@ impl World {
         }
         let mut best: Option<Hit> = None;
         let reach = Cell::new(t_max);
-        self.for_each_hit(item, ray, t_max, skip, &reach, &mut |hit| {
+        self.for_each_hit(item, ray, (0.0, t_max), skip, &reach, &mut |hit| {
             if hit.t < reach.get() {
                 reach.set(hit.t);
                 best = Some(hit);
@@ -664,29 +657,37 @@ impl World {
         &self,
         item: u32,
         ray: &Ray,
-        t_max: f64,
+        within: (f64, f64),
         skip: u8,
         reach: &Cell<f64>,
         f: &mut dyn FnMut(Hit),
     ) {
         let node = match decode(item) {
-            Ref::Primitive(i) => return self.primitive_hits(i, ray, t_max, skip, f),
+            Ref::Primitive(i) => return self.primitive_hits(i, ray, within, skip, f),
             Ref::Instance(k) => {
-                return self.instances[k].for_each_hit(k as u32, ray, t_max, skip, f);
+                return self.instances[k].for_each_hit(k as u32, ray, within.1, skip, f);
             }
             Ref::Csg(k) => &self.csg[k],
         };
         if node.op == CsgOp::Bound {
             if self.ray_meets_bounds(&node.children[1..], ray) {
-                self.for_each_hit(node.children[0], ray, t_max, skip, reach, f);
+                self.for_each_hit(node.children[0], ray, within, skip, reach, f);
             }
             return;
         }
+        let within = match node.op {
+            CsgOp::Intersection | CsgOp::Clip => match self.kept_window(node, ray, within) {
+                Some(w) => w,
+                None => return,
+            },
+            _ => within,
+        };
+        let t_max = within.1;
         let visit = |i: usize, f: &mut dyn FnMut(Hit)| {
             self.for_each_hit(
                 node.children[i],
                 ray,
-                t_max,
+                within,
                 skip,
                 reach,
                 &mut |hit: Hit| {
@@ -720,15 +721,65 @@ impl World {
         }
     }
 
-    fn primitive_hits(&self, i: usize, ray: &Ray, t_max: f64, skip: u8, f: &mut dyn FnMut(Hit)) {
+    /// The part of `within` where a crossing of an intersection or a clip can be kept:
+    /// inside every convex primitive that must hold it (an intersection's children, a
+    /// clip's clipping ones), found from where the line crosses them. A quartic clipped by
+    /// a cylinder and two planes (shapesq.inc's) then searches a few units of the line for
+    /// its roots, not all of it. None where that part is empty.
+    fn kept_window(
+        &self,
+        node: &CsgNode,
+        ray: &Ray,
+        (mut lo, mut hi): (f64, f64),
+    ) -> Option<(f64, f64)> {
+        let first = usize::from(node.op == CsgOp::Clip);
+        for &c in &node.children[first..] {
+            let Ref::Primitive(i) = decode(c) else {
+                continue;
+            };
+            let p = &self.primitives[i];
+            if p.flags & flags::INVERSE != 0 {
+                continue;
+            }
+            match p.shape.line_inside(&self.local_ray(p, ray), &self.tables) {
+                LineInside::Unknown => {}
+                LineInside::Never => return None,
+                LineInside::Between(a, b) => {
+                    // Wide of the crossings' rounding (a near-tangent quadric's is the
+                    // square root of the unit roundoff's).
+                    let slack = 1e-6
+                        * [a, b]
+                            .iter()
+                            .filter(|t| t.is_finite())
+                            .fold(0.0, |m: f64, t| m.max(t.abs()));
+                    lo = lo.max(a - slack);
+                    hi = hi.min(b + slack);
+                }
+            }
+        }
+        (lo < hi).then_some((lo, hi))
+    }
+
+    /// The crossings of a primitive within (lo, hi) (lo at least 0).
+    fn primitive_hits(
+        &self,
+        i: usize,
+        ray: &Ray,
+        (lo, hi): (f64, f64),
+        skip: u8,
+        f: &mut dyn FnMut(Hit),
+    ) {
         let p = &self.primitives[i];
         if p.flags & skip != 0 {
             return;
         }
         let flipped = p.flags & flags::INVERSE != 0;
-        p.shape
-            .each_hit_part(&self.local_ray(p, ray), &self.tables, |t, part| {
-                if t > 0.0 && t < t_max {
+        p.shape.each_hit_part_within(
+            &self.local_ray(p, ray),
+            &self.tables,
+            (lo, hi),
+            |t, part| {
+                if t > lo && t < hi {
                     f(Hit {
                         t,
                         primitive: i as u32,
@@ -737,7 +788,8 @@ impl World {
                         instance: NO_INSTANCE,
                     });
                 }
-            });
+            },
+        );
     }
 
     /// Whether a hit at `p` on the child at `i` is on the node's surface, from where `p`
@@ -1001,7 +1053,7 @@ impl World {
         let mut open = true;
         let everywhere = Cell::new(f64::INFINITY);
         let mut each = |item: u32| {
-            self.for_each_hit(item, ray, t_max, skip, &everywhere, &mut |hit| {
+            self.for_each_hit(item, ray, (0.0, t_max), skip, &everywhere, &mut |hit| {
                 if open && !visit(&hit) {
                     open = false;
                 }
@@ -1316,6 +1368,109 @@ mod tests {
             met += usize::from(hit.is_some());
         }
         assert!(met > 500, "too few rays met anything ({met})");
+    }
+
+    /// A quartic clipped by a cylinder and two planes (shapesq.inc's helix), and an
+    /// intersection of a sphere and a box with it, upright and turned.
+    fn clipped_quartics(turn: &Transform) -> (World, u32, u32) {
+        let mut helix = [0.0; 35];
+        (helix[16], helix[18], helix[27], helix[29]) = (-0.1666, 1.0, 0.5, -1.0);
+        let mut b = WorldBuilder::default();
+        b.tables.quartics.push(helix);
+        b.tables
+            .quadrics
+            .push([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let scale = Transform::scale(DVec3::splat(2.0)).expect("invertible");
+        let mut add = |shape, t: &Transform| b.primitive(shape, t, 0, 0);
+        let quartic = add(ShapeKind::Quartic(0), turn);
+        let cylinder = add(ShapeKind::Quadric(0), &scale.then(turn));
+        let plane = |sign: f64, distance| ShapeKind::Plane {
+            normal: DVec3::Z * sign,
+            distance,
+        };
+        let (top, bottom) = (
+            add(plane(1.0, std::f64::consts::SQRT_2), turn),
+            add(plane(-1.0, 0.0), turn),
+        );
+        let ball = ShapeKind::Sphere {
+            center: DVec3::new(0.5, 0.5, 0.7),
+            radius: 1.2,
+        };
+        let cube = ShapeKind::Box {
+            min: DVec3::splat(-1.0),
+            max: DVec3::splat(1.2),
+        };
+        let meet = vec![
+            add(ShapeKind::Quartic(0), turn),
+            add(ball, turn),
+            add(cube, turn),
+        ];
+        let clip = b.csg(CsgOp::Clip, vec![quartic, cylinder, top, bottom], false);
+        let meet = b.csg(CsgOp::Intersection, meet, false);
+        (b.build(), clip.0, meet.0)
+    }
+
+    /// The crossings a clip's or an intersection's quartic finds within the window its
+    /// convex children leave are those of the whole line that the other children keep;
+    /// upright, the clip's box (a cylinder's open sides cut by half-spaces) holds them,
+    /// turned it has none (the axes' rounding).
+    #[test]
+    fn clipped_quartics_search_only_where_the_clip_keeps() {
+        let mut found = 0;
+        for turn in [
+            Transform::IDENTITY,
+            Transform::rotate(DVec3::new(20.0, -35.0, 10.0)),
+        ] {
+            let (world, clip, meet) = clipped_quartics(&turn);
+            let bounds = world.item_bounds(clip);
+            assert_eq!(bounds.is_some(), turn.is_identity());
+            let mut next = crate::geometry::uniform_stream(0x1234_5678_9abc_def1);
+            let mut v = |s: f64| DVec3::new(next(), next(), next()) * (2.0 * s) - s;
+            for _ in 0..3000 {
+                let origin = v(6.0);
+                let ray = Ray::new(origin, v(1.5) + DVec3::Z * 0.7 - origin);
+                for item in [clip, meet] {
+                    let hits = windowed_and_kept(&world, item, &ray);
+                    for (a, b) in &hits {
+                        assert!((a - b).abs() <= 1e-9 * (1.0 + b.abs()), "{ray:?}: {a} {b}");
+                        let p = ray.at(*a);
+                        let held = |b: &Aabb| p.cmpge(b.min).all() && p.cmple(b.max).all();
+                        assert!(item != clip || bounds.is_none_or(|b| held(&b)), "{p}");
+                    }
+                    found += hits.len();
+                }
+            }
+        }
+        assert!(found > 3000, "{found} crossings");
+    }
+
+    /// The first child's crossings of a CSG node that `for_each_hit` finds (within its
+    /// window), paired with those of the whole line that the other children hold; panics
+    /// where their counts differ.
+    fn windowed_and_kept(world: &World, item: u32, ray: &Ray) -> Vec<(f64, f64)> {
+        let Ref::Csg(k) = decode(item) else {
+            unreachable!("a CSG node")
+        };
+        let children = &world.csg[k].children;
+        let Ref::Primitive(first) = decode(children[0]) else {
+            unreachable!("a primitive first")
+        };
+        let mut windowed = Vec::new();
+        let everywhere = Cell::new(f64::INFINITY);
+        world.for_each_hit(item, ray, (0.0, f64::INFINITY), 0, &everywhere, &mut |h| {
+            if h.primitive as usize == first {
+                windowed.push(h.t);
+            }
+        });
+        windowed.sort_by(f64::total_cmp);
+        let p = &world.primitives[first];
+        let whole = p.shape.all_hits(&world.local_ray(p, ray), &world.tables);
+        let keeps = |t: f64| children[1..].iter().all(|&c| world.inside(c, ray.at(t)));
+        let kept: Vec<f64> = (whole.as_slice().iter().copied())
+            .filter(|&t| t > 0.0 && keeps(t))
+            .collect();
+        assert_eq!(windowed.len(), kept.len(), "{ray:?}: {windowed:?} {kept:?}");
+        windowed.into_iter().zip(kept).collect()
     }
 
     /// A shadow ray that tests first the item that stopped the one before gets the same
