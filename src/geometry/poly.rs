@@ -102,7 +102,12 @@ impl PolyData {
 
     /// Every crossing along the whole line, in increasing order, except those at the ray's
     /// own origin (see [`DEPTH_TOLERANCE`]).
-    pub fn each_hit(&self, ray: &Ray, mut f: impl FnMut(f64)) {
+    pub fn each_hit(&self, ray: &Ray, f: impl FnMut(f64)) {
+        self.each_hit_within(ray, (f64::NEG_INFINITY, f64::INFINITY), f);
+    }
+
+    /// [`PolyData::each_hit`], searched only within (lo, hi) along the ray.
+    pub fn each_hit_within(&self, ray: &Ray, (lo, hi): (f64, f64), mut f: impl FnMut(f64)) {
         let d_len = ray.direction.length();
         if d_len == 0.0 || !d_len.is_finite() {
             return;
@@ -115,7 +120,11 @@ impl PolyData {
         let coef = self.along(o, dir);
         let coef = &coef[MAX_ORDER - self.order..];
         let reach = root_bound(coef).min(REACH * (1.0 + o.length()) + s0.abs());
-        for &s in roots_in_wide(coef, -reach, reach).as_slice() {
+        let (from, to) = ((lo * d_len - s0).max(-reach), (hi * d_len - s0).min(reach));
+        if from >= to {
+            return;
+        }
+        for &s in roots_in_wide(coef, from, to).as_slice() {
             let t = s0 + s;
             if t.abs() > DEPTH_TOLERANCE && t.is_finite() {
                 f(t / d_len);

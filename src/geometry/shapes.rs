@@ -263,8 +263,9 @@ impl ShapeKind {
         }
     }
 
-    /// [`ShapeKind::each_hit_part`], but a shape that searches for its crossings (a
-    /// quartic) searches only `within` (the caller keeps only crossings there).
+    /// [`ShapeKind::each_hit_part`], but the shapes that search the whole line for their
+    /// crossings (quartics, polys) search only `within` (the caller keeps only crossings
+    /// there).
     pub fn each_hit_part_within(
         &self,
         ray: &Ray,
@@ -272,13 +273,17 @@ impl ShapeKind {
         within: (f64, f64),
         mut f: impl FnMut(f64, u32),
     ) {
-        if let ShapeKind::Quartic(i) = *self {
-            quartic_crossings_within(ray, &tables.quartics[i as usize], within, |t| {
-                f(t, 0);
-                true
-            });
-        } else {
-            self.each_hit_part(ray, tables, f);
+        match *self {
+            ShapeKind::Quartic(i) => {
+                quartic_crossings_within(ray, &tables.quartics[i as usize], within, |t| {
+                    f(t, 0);
+                    true
+                });
+            }
+            ShapeKind::Poly(i) => {
+                tables.polys[i as usize].each_hit_within(ray, within, |t| f(t, 0))
+            }
+            _ => self.each_hit_part(ray, tables, f),
         }
     }
 

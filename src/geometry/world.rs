@@ -1370,13 +1370,17 @@ mod tests {
         assert!(met > 500, "too few rays met anything ({met})");
     }
 
-    /// A quartic clipped by a cylinder and two planes (shapesq.inc's helix), and an
-    /// intersection of a sphere and a box with it, upright and turned.
-    fn clipped_quartics(turn: &Transform) -> (World, u32, u32) {
+    /// A quartic clipped by a cylinder and two planes (shapesq.inc's helix), an
+    /// intersection of a sphere and a box with it, and the helix as a `poly` clipped the
+    /// same way, upright and turned.
+    fn clipped_quartics(turn: &Transform) -> (World, [u32; 3]) {
         let mut helix = [0.0; 35];
         (helix[16], helix[18], helix[27], helix[29]) = (-0.1666, 1.0, 0.5, -1.0);
         let mut b = WorldBuilder::default();
         b.tables.quartics.push(helix);
+        b.tables
+            .polys
+            .push(super::super::poly::PolyData::new(4, &helix));
         b.tables
             .quadrics
             .push([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
@@ -1405,9 +1409,11 @@ mod tests {
             add(ball, turn),
             add(cube, turn),
         ];
+        let poly = add(ShapeKind::Poly(0), turn);
         let clip = b.csg(CsgOp::Clip, vec![quartic, cylinder, top, bottom], false);
+        let poly = b.csg(CsgOp::Clip, vec![poly, cylinder, top, bottom], false);
         let meet = b.csg(CsgOp::Intersection, meet, false);
-        (b.build(), clip.0, meet.0)
+        (b.build(), [clip.0, meet.0, poly.0])
     }
 
     /// The crossings a clip's or an intersection's quartic finds within the window its
@@ -1421,7 +1427,8 @@ mod tests {
             Transform::IDENTITY,
             Transform::rotate(DVec3::new(20.0, -35.0, 10.0)),
         ] {
-            let (world, clip, meet) = clipped_quartics(&turn);
+            let (world, items) = clipped_quartics(&turn);
+            let clip = items[0];
             let bounds = world.item_bounds(clip);
             assert_eq!(bounds.is_some(), turn.is_identity());
             let mut next = crate::geometry::uniform_stream(0x1234_5678_9abc_def1);
@@ -1429,7 +1436,7 @@ mod tests {
             for _ in 0..3000 {
                 let origin = v(6.0);
                 let ray = Ray::new(origin, v(1.5) + DVec3::Z * 0.7 - origin);
-                for item in [clip, meet] {
+                for item in items {
                     let hits = windowed_and_kept(&world, item, &ray);
                     for (a, b) in &hits {
                         assert!((a - b).abs() <= 1e-9 * (1.0 + b.abs()), "{ray:?}: {a} {b}");
@@ -1441,7 +1448,7 @@ mod tests {
                 }
             }
         }
-        assert!(found > 3000, "{found} crossings");
+        assert!(found > 5000, "{found} crossings");
     }
 
     /// The first child's crossings of a CSG node that `for_each_hit` finds (within its
