@@ -97,6 +97,10 @@ struct CsgNode {
     children: Vec<u32>,
     inverse: bool,
     index: Option<Box<ChildIndex>>,
+    /// An intersection or a clip with a child that searches the line for its crossings
+    /// (a quartic, a poly): its convex children's spans narrow that search
+    /// ([`World::kept_window`]). Elsewhere finding the spans would only double the work.
+    windowed: bool,
 }
 
 /// Past this many children a CSG node indexes them by their boxes, so that a ray or a
@@ -253,6 +257,7 @@ impl WorldBuilder {
             children: children.into_iter().map(|i| i.0).collect(),
             inverse,
             index: None,
+            windowed: false,
         });
         Item((self.csg.len() - 1) as u32 | CSG_BIT)
     }
@@ -359,7 +364,25 @@ impl World {
         for k in 0..self.csg.len() {
             let index = self.child_index(&self.csg[k]);
             self.csg[k].index = index.map(Box::new);
+            self.csg[k].windowed = self.searches_within(&self.csg[k]);
         }
+    }
+
+    /// Whether an intersection or a clip holds a quartic or a poly where its crossings
+    /// count (a clip's first child, any child of an intersection).
+    fn searches_within(&self, node: &CsgNode) -> bool {
+        let counted = match node.op {
+            CsgOp::Intersection => &node.children[..],
+            CsgOp::Clip => &node.children[..1],
+            _ => return false,
+        };
+        counted.iter().any(|&c| match decode(c) {
+            Ref::Primitive(i) => matches!(
+                self.primitives[i].shape,
+                ShapeKind::Quartic(_) | ShapeKind::Poly(_)
+            ),
+            _ => false,
+        })
     }
 
     fn child_index(&self, node: &CsgNode) -> Option<ChildIndex> {
@@ -675,12 +698,13 @@ impl World {
             }
             return;
         }
-        let within = match node.op {
-            CsgOp::Intersection | CsgOp::Clip => match self.kept_window(node, ray, within) {
+        let within = if node.windowed {
+            match self.kept_window(node, ray, within) {
                 Some(w) => w,
                 None => return,
-            },
-            _ => within,
+            }
+        } else {
+            within
         };
         let t_max = within.1;
         let visit = |i: usize, f: &mut dyn FnMut(Hit)| {
@@ -1428,6 +1452,7 @@ mod tests {
             Transform::rotate(DVec3::new(20.0, -35.0, 10.0)),
         ] {
             let (world, items) = clipped_quartics(&turn);
+            assert!(world.csg.iter().all(|n| n.windowed), "each holds a search");
             let clip = items[0];
             let bounds = world.item_bounds(clip);
             assert_eq!(bounds.is_some(), turn.is_identity());
