@@ -4,11 +4,10 @@
 //! Along a ray, f(t) = g - 1 is convex when both exponents are at least 1 (a norm raised to
 //! a power >= 1, plus a convex term), so it has at most two roots, which Newton's steps on
 //! the norm g^(1/p_z) from either end of the ray's span in the unit cube reach without
-//! passing them. Otherwise
-//! (e or n above 2, the pinched stars) the span is narrowed to a convex shape around the
-//! star, cut where it crosses the coordinate planes, each piece is sampled, and sign
-//! changes and dips between samples are refined. Grazing rays near a tangency find the
-//! minimum itself, so they neither miss the surface nor see holes.
+//! passing them. Otherwise (e or n above 2, the pinched stars) the span is narrowed to a
+//! convex shape around the star, cut where it crosses the coordinate planes, each piece is
+//! sampled, and sign changes and dips between samples are refined. Grazing rays near a
+//! tangency find the minimum itself, so they neither miss the surface nor see holes.
 
 use glam::DVec3;
 
@@ -20,9 +19,10 @@ pub struct Superellipsoid {
     p: f64,
     /// 2 / n, the exponent of z.
     p_z: f64,
-    /// 1 / p, 1 / p_z and p_z / p, kept: a division is a fifth of a power's time, and
-    /// each value takes one or two of them.
+    /// 1 / p and 1 / p_z, kept: a division is a fifth of a power's time, and each value
+    /// would take one or two.
     inverse: (f64, f64),
+    /// p_z / p.
     ratio: f64,
 }
 
@@ -274,7 +274,7 @@ impl Superellipsoid {
                 Newton::Root(t) => t,
                 Newton::Miss if fa > 0.0 => entry,
                 Newton::Miss => self.root(ray, a, b, self.along(ray, a)),
-                Newton::Lost => self.bracketed_exit(ray, entry, b, fb),
+                Newton::Lost => self.bracketed_exit(ray, entry, b),
             };
             let _ = f(exit);
         }
@@ -302,9 +302,9 @@ impl Superellipsoid {
         }
     }
 
-    /// The exit root in [entry, b] (f(b) = fb > 0) by brackets, for when Newton's steps
-    /// from b overflowed.
-    fn bracketed_exit(&self, ray: &Ray, entry: f64, b: f64, fb: f64) -> f64 {
+    /// The exit root in [entry, b] (f(b) > 0) by brackets, for when Newton's steps from b
+    /// failed.
+    fn bracketed_exit(&self, ray: &Ray, entry: f64, b: f64) -> f64 {
         let m = if self.slope(ray, entry) < 0.0 && self.slope(ray, b) > 0.0 {
             self.slope_root(ray, entry, b)
         } else {
@@ -314,7 +314,6 @@ impl Superellipsoid {
         if fm < 0.0 {
             self.root(ray, m, b, fm)
         } else {
-            let _ = fb;
             m
         }
     }
@@ -440,7 +439,7 @@ enum Newton {
     Root(f64),
     /// No root on the way.
     Miss,
-    /// A value or slope overflowed.
+    /// A value or slope overflowed, or 80 steps did not reach the root (a tangency).
     Lost,
 }
 
