@@ -245,25 +245,20 @@ impl Superellipsoid {
 
     /// At most two roots in [a, b] of a convex shape's N - 1 (zero where f is): the entry,
     /// found by Newton's steps from a where N(a) > 1, and the exit, from b where N(b) > 1
-    /// (only if `f` asks for more). Each step costs one norm and gradient (five `powf`),
-    /// where searching f's minimum first and then bracketing each root took two to three
-    /// times as many. Where the steps fail (a tangency beyond 80 steps, an overflow), the
-    /// bracketing search takes over.
+    /// (only if `f` asks for more). Each step costs one norm and gradient (four or five
+    /// `powf`), where searching f's minimum first and then bracketing each root took two to
+    /// three times as many. Where the steps miss a sign change that is there (rounding),
+    /// regula falsi brackets it.
     fn convex_hits(&self, ray: &Ray, a: f64, b: f64, f: &mut impl FnMut(f64) -> bool) {
         let ((fa, sa), (fb, sb)) = (self.norm_on_line(ray, a), self.norm_on_line(ray, b));
-        if !(fa.is_finite() && sa.is_finite() && fb.is_finite() && sb.is_finite()) {
-            return self.bracketed_hits(ray, a, b, f);
-        }
         let tol = root_tolerance(a, b);
         let mut entry = a;
         if fa > 0.0 {
             entry = match self.newton(ray, (a, fa, sa), b, tol) {
-                Newton::Root(t) => t,
+                Some(t) => t,
                 // Both ends outside and the slope turns before zero: the line misses.
-                Newton::Miss if fb > 0.0 => return,
-                // A sign change Newton's steps lost to rounding: bracket it.
-                Newton::Miss => self.root(ray, a, b, self.along(ray, a)),
-                Newton::Lost => return self.bracketed_hits(ray, a, b, f),
+                None if fb > 0.0 => return,
+                None => self.root(ray, a, b, self.along(ray, a)),
             };
             if !f(entry) {
                 return;
@@ -271,56 +266,17 @@ impl Superellipsoid {
         }
         if fb > 0.0 {
             let exit = match self.newton(ray, (b, fb, sb), entry, tol) {
-                Newton::Root(t) => t,
-                Newton::Miss if fa > 0.0 => entry,
-                Newton::Miss => self.root(ray, a, b, self.along(ray, a)),
-                Newton::Lost => self.bracketed_exit(ray, entry, b),
+                Some(t) => t,
+                None if fa > 0.0 => entry,
+                None => self.root(ray, a, b, self.along(ray, a)),
             };
             let _ = f(exit);
         }
     }
 
-    /// The convex f's roots in [a, b] by brackets: the minimum (the root of the rising
-    /// slope) splits the line into a falling and a rising part with a root each.
-    fn bracketed_hits(&self, ray: &Ray, a: f64, b: f64, f: &mut impl FnMut(f64) -> bool) {
-        let (fa, fb) = (self.along(ray, a), self.along(ray, b));
-        if fa <= 0.0 && fb <= 0.0 {
-            return;
-        }
-        if (fa <= 0.0) != (fb <= 0.0) {
-            let _ = f(self.root(ray, a, b, fa));
-            return;
-        }
-        // Both ends outside: the minimum decides.
-        if self.slope(ray, a) >= 0.0 || self.slope(ray, b) <= 0.0 {
-            return;
-        }
-        let m = self.slope_root(ray, a, b);
-        let fm = self.along(ray, m);
-        if fm < 0.0 && f(self.root(ray, a, m, fa)) {
-            let _ = f(self.root(ray, m, b, fm));
-        }
-    }
-
-    /// The exit root in [entry, b] (f(b) > 0) by brackets, for when Newton's steps from b
-    /// failed.
-    fn bracketed_exit(&self, ray: &Ray, entry: f64, b: f64) -> f64 {
-        let m = if self.slope(ray, entry) < 0.0 && self.slope(ray, b) > 0.0 {
-            self.slope_root(ray, entry, b)
-        } else {
-            entry
-        };
-        let fm = self.along(ray, m);
-        if fm < 0.0 {
-            self.root(ray, m, b, fm)
-        } else {
-            m
-        }
-    }
-
     /// Where the line is inside the convex shape within [a, b], if anywhere; where
-    /// Newton's steps fail (rounding, overflow), the span reaches to the end (it bounds a
-    /// search).
+    /// Newton's steps miss a sign change by rounding, the span reaches to the end (it
+    /// bounds a search).
     fn convex_span(&self, ray: &Ray, a: f64, b: f64) -> Option<(f64, f64)> {
         let ((fa, sa), (fb, sb)) = (self.norm_on_line(ray, a), self.norm_on_line(ray, b));
         let tol = root_tolerance(a, b);
@@ -328,52 +284,46 @@ impl Superellipsoid {
             a
         } else {
             match self.newton(ray, (a, fa, sa), b, tol) {
-                Newton::Root(t) => t,
-                Newton::Miss if fb > 0.0 => return None,
-                Newton::Miss | Newton::Lost => a,
+                Some(t) => t,
+                None if fb > 0.0 => return None,
+                None => a,
             }
         };
         let hi = if fb <= 0.0 {
             b
         } else {
-            match self.newton(ray, (b, fb, sb), lo, tol) {
-                Newton::Root(t) => t,
-                Newton::Miss | Newton::Lost => b,
-            }
+            self.newton(ray, (b, fb, sb), lo, tol).unwrap_or(b)
         };
         Some((lo, hi))
     }
 
     /// Newton's steps on the convex N - 1 from `start` = (t, N(t) - 1 > 0, its slope)
     /// toward `limit`: a convex function lies above its tangents, so from outside its steps
-    /// never pass the nearest root on that side and rise to it. A miss where the slope
-    /// stops leading down toward `limit` (N's least value is above 1) or a step passes
-    /// `limit`.
-    fn newton(&self, ray: &Ray, start: (f64, f64, f64), limit: f64, tol: f64) -> Newton {
+    /// never pass the nearest root on that side and rise to it. None where the slope stops
+    /// leading down toward `limit` (N's least value is above 1), a step passes `limit`, or
+    /// a value is not finite. At a tangency the steps only halve the distance to the
+    /// touching point: 80 of them come within 2^-80 of it.
+    fn newton(&self, ray: &Ray, start: (f64, f64, f64), limit: f64, tol: f64) -> Option<f64> {
         let (mut t, mut v, mut s) = start;
         let toward = (limit - t).signum();
-        // Near a tangency the steps only halve the distance: 80 covers 2^-80 of it.
         for _ in 0..80 {
-            if !(v.is_finite() && s.is_finite()) {
-                return Newton::Lost;
-            }
-            if s * toward >= 0.0 {
-                return Newton::Miss;
+            if !(v.is_finite() && s.is_finite()) || s * toward >= 0.0 {
+                return None;
             }
             let next = t - v / s;
             if (next - limit) * toward > 0.0 {
-                return Newton::Miss;
+                return None;
             }
             if (next - t).abs() <= tol {
-                return Newton::Root(next);
+                return Some(next);
             }
             t = next;
             (v, s) = self.norm_on_line(ray, t);
             if v <= 0.0 {
-                return Newton::Root(t);
+                return Some(t);
             }
         }
-        Newton::Lost
+        Some(t)
     }
 
     /// Roots in [a, b] (a smooth piece) from samples: sign changes, and dips below zero
@@ -432,15 +382,6 @@ impl Superellipsoid {
         let (sa, sb) = (self.slope(ray, a), self.slope(ray, b));
         illinois(|t| self.slope(ray, t), a, b, sa, sb, 1e-10)
     }
-}
-
-/// What Newton's steps toward a root found.
-enum Newton {
-    Root(f64),
-    /// No root on the way.
-    Miss,
-    /// A value or slope overflowed, or 80 steps did not reach the root (a tangency).
-    Lost,
 }
 
 /// Each of two magnitudes' share of the sum of their p-th powers, from w = (smaller /
