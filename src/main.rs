@@ -1055,6 +1055,10 @@ impl JobProgress for Bar {
     fn warnings(&self, warnings: &[penumbra::lang::Diagnostic]) {
         self.0.suspend(|| print_warnings(warnings));
     }
+
+    fn debug(&self, text: &str) {
+        self.0.suspend(|| eprint!("{text}"));
+    }
 }
 
 /// Progress lines on stderr, one per replicate, so a long study shows where it is.

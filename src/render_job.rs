@@ -18,6 +18,8 @@ pub trait JobProgress: Sync {
     fn samples(&self, done: u64, total: u64);
     /// Warnings from reading the scene.
     fn warnings(&self, warnings: &[Diagnostic]);
+    /// The scene's `#debug` text, which POV-Ray prints as it parses (once per frame).
+    fn debug(&self, _text: &str) {}
     /// True once the user asked to stop (Ctrl-C, SIGTERM).
     fn cancelled(&self) -> bool {
         false
@@ -293,6 +295,9 @@ impl FrameRenderer<'_> {
         let loaded = load_scene_with(&self.job.scene, &load, self.settings.skip_unsupported)
             .map_err(|d| d.to_string())?;
         self.progress.warnings(&loaded.warnings);
+        if !loaded.debug.is_empty() {
+            self.progress.debug(&loaded.debug);
+        }
         let key = loaded.inputs_hash;
         let rebuilt = self.prepared.as_ref().is_none_or(|(k, _)| *k != key);
         if rebuilt {

@@ -163,3 +163,39 @@ fn a_hostile_loop_ends_with_the_memory_budget_error() {
     // Loose: it must end by itself, long before any test timeout.
     assert!(elapsed < 120.0, "took {elapsed:.0} s");
 }
+
+/// `#debug` text reaches stderr while rendering, as POV-Ray prints its debug stream, once per
+/// frame of an animation (each frame parses the scene again), and under `--quiet` too.
+#[test]
+fn render_prints_the_scenes_debug_text() {
+    let temp = scratch("debug");
+    let dir = temp.path();
+    let source = dir.join("debug.pov");
+    std::fs::write(
+        &source,
+        "#version 3.7;\n#debug concat(\"frame clock \", str(clock, 0, 2), \"\\n\")\n\
+         camera { location -z look_at 0 }\n",
+    )
+    .expect("writes the scene");
+    let run = |extra: &[&str]| {
+        let out = penumbra()
+            .arg("render")
+            .arg(&source)
+            .args(["--quiet", "--width", "8", "--height", "6", "--spp", "1"])
+            .args(extra)
+            .arg("--output")
+            .arg(dir.join("debug.png"))
+            .output()
+            .expect("runs");
+        assert!(out.status.success(), "{out:?}");
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    assert_eq!(run(&[]).matches("frame clock 0.00\n").count(), 1);
+    let frames = run(&["--frames", "1..3"]);
+    for clock in ["0.00", "0.50", "1.00"] {
+        assert!(
+            frames.contains(&format!("frame clock {clock}\n")),
+            "{frames}"
+        );
+    }
+}
