@@ -1,7 +1,8 @@
 //! Normals with POV-Ray's own noise-based perturbations (bumps, dents, wrinkles) match POV-Ray
 //! in distribution (issue 5). penumbra's noise is its own (docs/noise.md), so the normals are
-//! compared as images: a white plane at z = 0.37 + 3.1 k (k = 0..3; 0..15 for dents, whose
-//! fine bands hang on the few highest noise peaks), 32 x 32 units at
+//! compared as images: a white plane at z = 0.37 + 3.1 k (k = 0..15; 0..63 for dents, whose
+//! fine bands hang on the few highest noise peaks; fewer let one set of peaks decide: see
+//! docs/appearance.md), 32 x 32 units at
 //! 512 x 512 points, lit along the view, gives N.L (the cosine of the tilt); a second light
 //! at 45 degrees gives the x slope of the perturbation. For both, the 19 quantiles (5% ..
 //! 95%) must agree within 0.03 and the radially averaged power spectrum within 20% per octave
