@@ -125,8 +125,13 @@ fn the_pilot_stays_under_adaptive_lights_without_bias() {
             .unzip()
     };
     let (images, counts) = render("area_adaptive");
+    // Only the image's frame leaves its pilot samples out (`on_frame`): 2 (w + h) - 4.
     for &(camera, samples) in &counts {
-        assert_eq!(camera, samples, "pilot samples were left out");
+        assert_eq!(
+            camera - samples,
+            2 * (160 + 120) - 4,
+            "pilot samples were left out"
+        );
     }
     let (_, covered) = render("soft_shadow");
     assert!(covered.iter().all(|&(camera, samples)| camera > samples));
@@ -134,6 +139,57 @@ fn the_pilot_stays_under_adaptive_lights_without_bias() {
     let verdict = study::evaluate(&images, &reference.full, &reference.half).unwrap();
     println!("area_adaptive, adaptive 8 spp: {verdict}");
     assert!(verdict.passes(SQRT_B_THRESHOLD), "{verdict}");
+}
+
+/// An edge that runs along the image's frame, its other side outside the image, shows in
+/// none of the neighbours of the frame pixels it crosses (beyond the frame there are none).
+/// Here the top row is half covered (dark above y = 7.5, light below, every row under it
+/// light): a top-row pixel whose two neighbours in the row drew light pilot samples looks
+/// smooth. Judged from its neighbours alone and keeping its pilot sample (as inner pixels
+/// do), such a pixel (probability 1/4) is its one pilot sample, squared error 1/4: the mean
+/// squared error of the row is 1/16. Counting its own pilot value in and leaving the sample
+/// out of its mean, it looks smooth only when all three drew light (1/8), and then takes one
+/// fresh sample: 1/32. Over 4 seeds x 640 pixels the standard errors are 0.0021 and 0.0016,
+/// so the bound halfway, 3/64, lies 7 and 10 of them from either. The row's mean tests the
+/// bias: keeping the pilot sample of a pixel judged with it moves the mean from 1/2 to
+/// 9/16 (a standard error of the mean is 0.005).
+#[test]
+fn an_edge_along_the_frame_is_found_without_bias() {
+    let source = "#version 3.7;
+        global_settings { assumed_gamma 1.0 }
+        camera { orthographic location <0, 0, -10> look_at <0, 0, 0> right x*640 up y*16 }
+        plane { z, 0 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }
+        box { <-1000, 7.5, -5>, <1000, 100, -1> pigment { rgb 0 } finish { ambient 1 diffuse 0 } }";
+    let options = LoadOptions {
+        image_width: 640,
+        image_height: 16,
+        ..LoadOptions::default()
+    };
+    let scene = penumbra::lang::load_scene_source("frame.pov", source, &options)
+        .expect("loads")
+        .scene;
+    let top: Vec<f64> = (0..4)
+        .flat_map(|k| {
+            let o = RenderOptions {
+                width: 640,
+                height: 16,
+                samples_per_pixel: 4,
+                seed: 130 + k,
+                adaptive: true,
+                ..RenderOptions::default()
+            };
+            let image = penumbra::render_scene(&scene, &o, &()).expect("renders").0;
+            (0..640)
+                .map(|x| f64::from(image.get(x, 0)[0]))
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let n = top.len() as f64;
+    let mse = top.iter().map(|v| (v - 0.5).powi(2)).sum::<f64>() / n;
+    let mean = top.iter().sum::<f64>() / n;
+    println!("top row: mean {mean:.4}, squared error {mse:.4}");
+    assert!(mse < 3.0 / 64.0, "squared error {mse}");
+    assert!((mean - 0.5).abs() < 4.0 * 0.005, "mean {mean}");
 }
 
 /// A scene of scenes/ at 160x120 and its committed POV-Ray reference.
