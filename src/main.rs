@@ -637,7 +637,10 @@ fn parse_target(s: &str) -> Result<(f64, bool), String> {
 /// `resume` is the option that continues it, in the command line's own style.
 fn render_job(job: &Job, settings: &JobSettings, resume: &str) -> Result<ExitCode, String> {
     let bar = progress_bar(!job.quiet && std::io::stderr().is_terminal());
-    let progress = Bar(bar.clone());
+    let progress = Bar {
+        bar: bar.clone(),
+        debug: job.debug_console,
+    };
     let reports = run_job(job, settings, &progress);
     bar.finish_and_clear();
     let reports = match reports {
@@ -1032,20 +1035,24 @@ fn progress_bar(show: bool) -> ProgressBar {
     bar
 }
 
-struct Bar(ProgressBar);
+/// The render's progress bar, and whether the scene's `#debug` text is shown (`-GD`).
+struct Bar {
+    bar: ProgressBar,
+    debug: bool,
+}
 
 impl JobProgress for Bar {
     fn frame(&self, index: usize, count: usize, output: &Path) {
         if count > 1 {
-            self.0
+            self.bar
                 .set_message(format!("frame {}/{count} {}", index + 1, output.display()));
         }
-        self.0.set_position(0);
+        self.bar.set_position(0);
     }
 
     fn samples(&self, done: u64, total: u64) {
-        self.0.set_length(total);
-        self.0.set_position(done);
+        self.bar.set_length(total);
+        self.bar.set_position(done);
     }
 
     fn cancelled(&self) -> bool {
@@ -1053,11 +1060,13 @@ impl JobProgress for Bar {
     }
 
     fn warnings(&self, warnings: &[penumbra::lang::Diagnostic]) {
-        self.0.suspend(|| print_warnings(warnings));
+        self.bar.suspend(|| print_warnings(warnings));
     }
 
     fn debug(&self, text: &str) {
-        self.0.suspend(|| eprint!("{text}"));
+        if self.debug {
+            self.bar.suspend(|| eprint!("{text}"));
+        }
     }
 }
 

@@ -165,7 +165,8 @@ fn a_hostile_loop_ends_with_the_memory_budget_error() {
 }
 
 /// `#debug` text reaches stderr while rendering, as POV-Ray prints its debug stream, once per
-/// frame of an animation (each frame parses the scene again), and under `--quiet` too.
+/// frame of an animation (each frame parses the scene again), and under `--quiet` too;
+/// POV-Ray's `-GD` silences it.
 #[test]
 fn render_prints_the_scenes_debug_text() {
     let temp = scratch("debug");
@@ -191,6 +192,20 @@ fn render_prints_the_scenes_debug_text() {
         String::from_utf8_lossy(&out.stderr).into_owned()
     };
     assert_eq!(run(&[]).matches("frame clock 0.00\n").count(), 1);
+    // POV-Ray's switches: `-GD` turns the debug stream off, `+GD` (the default) on.
+    let pov = |gd: &str| {
+        let out = penumbra()
+            .arg(&source)
+            .args(["+W8", "+H6", "-V", gd])
+            .arg(format!("+O{}", dir.join("debug_gd.png").display()))
+            .output()
+            .expect("runs");
+        assert!(out.status.success(), "{out:?}");
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    let (off, on) = (pov("-GD"), pov("+GD"));
+    assert!(!off.contains("frame clock"), "{off}");
+    assert_eq!(on.matches("frame clock 0.00\n").count(), 1, "{on}");
     let frames = run(&["--frames", "1..3"]);
     for clock in ["0.00", "0.50", "1.00"] {
         assert!(

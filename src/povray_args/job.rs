@@ -90,6 +90,8 @@ pub struct Job {
     pub declares: Vec<(String, f64)>,
     pub library_paths: Vec<PathBuf>,
     pub quiet: bool,
+    /// The scene's `#debug` text on stderr (POV-Ray's `+GD`, the default).
+    pub debug_console: bool,
     pub allow_write: Option<PathBuf>,
     /// `+C`: continue from the checkpoint.
     pub resume: bool,
@@ -139,6 +141,7 @@ pub fn job(settings: &PovSettings) -> Result<Job, String> {
         declares: settings.declares.clone(),
         library_paths: settings.library_paths.clone(),
         quiet: settings.quiet,
+        debug_console: settings.debug_console,
         allow_write: settings.allow_write.clone(),
         resume: settings.continue_trace,
         notes: settings.notes.clone(),

@@ -108,6 +108,8 @@ pub struct PovSettings {
     pub spp: Option<f64>,
     pub seed: u64,
     pub quiet: bool,
+    /// `+GD` (the default): the scene's `#debug` text on stderr.
+    pub debug_console: bool,
     /// `--allow-write DIR`.
     pub allow_write: Option<PathBuf>,
     /// `+C`: continue an interrupted render from its checkpoint.
@@ -142,6 +144,7 @@ impl Default for PovSettings {
             spp: None,
             seed: 0,
             quiet: false,
+            debug_console: true,
             allow_write: None,
             continue_trace: false,
             motion_blur: 1,
@@ -480,6 +483,16 @@ impl Reader<'_> {
             Setting::CyclicAnimation => a.cyclic = flag(switch_on, value, true)?,
             Setting::FrameStep => a.frame_step = integer(value)?.max(1),
             Setting::ContinueTrace => s.continue_trace = flag(switch_on, value, true)?,
+            Setting::DebugConsole => {
+                s.debug_console = flag(switch_on, value, true)?;
+                if switch_on == Some(true) && !value.trim().is_empty() {
+                    s.notes.push(format!(
+                        "note: `+GD{}` also writes the #debug stream to a file, which penumbra \
+                         does not; it is shown on the console only",
+                        value.trim()
+                    ));
+                }
+            }
             Setting::Verbose => {
                 if !flag(switch_on, value, true)? {
                     s.quiet = true;

@@ -57,6 +57,8 @@ pub enum Setting {
     /// penumbra's own: `--adaptive`, `--uniform`.
     Adaptive,
     Uniform,
+    /// `-GD`: the scene's `#debug` text is not shown.
+    DebugConsole,
     /// Accepted with a one-line note: does not apply to penumbra.
     NotApplicable,
 }
@@ -631,8 +633,11 @@ pub const OPTIONS: &[PovOption] = &[
     opt(
         "GD",
         "Debug_Console",
-        NotApplicable,
-        ["the #debug stream (`+GDfile` to a file)", IGNORED],
+        DebugConsole,
+        [
+            "the #debug stream (`+GDfile` to a file)",
+            "the same on the console (`-GD` silences it); no file is written",
+        ],
     ),
     opt(
         "",
