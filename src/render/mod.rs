@@ -744,6 +744,21 @@ struct Positions<'a> {
     first: FirstPoints<'a>,
 }
 
+impl Positions<'_> {
+    /// Where pixel `i`'s sample 0 takes its position.
+    fn of(&self, i: usize) -> PositionPlan {
+        let at = |seed, first| PositionPlan { seed, first };
+        match self.first {
+            FirstPoints::AfterPilot(pilots) => match pilots[i] {
+                PilotSample::Stays => at(self.seed, 1),
+                PilotSample::LeftOut => at(self.seed, 0),
+                PilotSample::Judged => at(self.seed ^ JUDGED_POSITIONS, 0),
+            },
+            FirstPoints::Listed(first) => at(self.seed, first[i]),
+        }
+    }
+}
+
 /// Where a per-pixel plan's sample 0 of each pixel takes its position: after the points
 /// the pixel's earlier samples took, so that together they stay one stratified set.
 enum FirstPoints<'a> {
@@ -846,20 +861,7 @@ impl SamplePlan<'_> {
                     range: first.min(part.end)..part.end,
                     seed: *seed,
                     fixed_light: one_ray[i],
-                    position: PositionPlan {
-                        seed: match positions.first {
-                            FirstPoints::AfterPilot(pilots) if pilots[i] == PilotSample::Judged => {
-                                positions.seed ^ JUDGED_POSITIONS
-                            }
-                            _ => positions.seed,
-                        },
-                        first: match positions.first {
-                            FirstPoints::AfterPilot(pilots) => {
-                                u32::from(pilots[i] == PilotSample::Stays)
-                            }
-                            FirstPoints::Listed(first) => first[i],
-                        },
-                    },
+                    position: positions.of(i),
                 }
             }
         }
