@@ -436,10 +436,11 @@ impl PixelWork {
 
 /// Adaptive sampling in two passes. A pilot of one sample per pixel, with
 /// [`pilot_light_rays`] shadow rays per area light, shows where the image changes (edges,
-/// textures, noise), what a sample costs and where the penumbrae are. Everything it decides for a pixel is read from the pixel's
-/// neighbours, not from the pixel itself, so the pixel's own pilot sample is independent of
-/// its decisions and may stay in its mean without bias (a pixel's own value deciding how
-/// long it is sampled is the usual adaptive bias):
+/// textures, noise), what a sample costs and where the penumbrae are. Everything it
+/// decides for a pixel is read from the pixel's neighbours, not from the pixel itself (but
+/// on the image's frame, below), so the pixel's own pilot sample is independent of its
+/// decisions and may stay in its mean without bias (a pixel's own value deciding how long
+/// it is sampled is the usual adaptive bias):
 /// - near a penumbra (within [`PENUMBRA_REACH`], some other pixel's shadow ray towards an
 ///   area light arrived and some other's was stopped) the pilot sample is left out and
 ///   fresh samples cover the light grid ([`LightSamples::Cover`]), unless every area light
