@@ -918,7 +918,7 @@ fn on_frame(w: usize, h: usize, i: usize) -> bool {
 /// along the frame, its other side outside, shows in no neighbour of the pixels it crosses,
 /// and they kept their one pilot sample. scenes/checker.pov at 640x480, 6 spp, held 7-31%
 /// of its squared error in the frame (0.7% of the pixels; 5 seeds) so; counting the pixel's
-/// own value, 7-11%, and the RMSE over the five 0.00241 -> 0.00225.
+/// own value, 6-11%, and the RMSE over the five 0.00241 -> 0.00225.
 fn change_with_own(values: &[[f32; 3]], near: &[usize], own: usize) -> f64 {
     let mut with_own = [0; 9];
     with_own[..near.len()].copy_from_slice(near);
