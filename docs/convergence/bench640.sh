@@ -5,7 +5,7 @@
 # hours each). Writes docs/convergence/640/NAME/ and prints each scene's summary.
 # Usage: docs/convergence/bench640.sh [SCENE.pov...]   (default: the scenes listed below)
 # Environment: SPP (default 1,2,3,4,6,8,16,32, and with --adaptive the averages 1.125, 1.25
-# and 1.5 too, where one whole step doubles the time; focal_blur also 64), SEEDS (default 2), THREADS (default 1: penumbra
+# and 1.5 too, where one whole step doubles the time), SEEDS (default 2), THREADS (default 1: penumbra
 # and POV-Ray alike, so a loaded 2-core machine disturbs both the same way), OPTIONS (extra
 # penumbra render options, e.g. "--adaptive"), OUT (default docs/convergence/640), BIN (a
 # built penumbra, instead of building one). Run it once as it is and once with
@@ -13,7 +13,6 @@
 # thread each); it then writes the equal-error table of both, docs/convergence/640/table.md.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-given_spp=${SPP:-}
 if [[ "${OPTIONS:-}" == *--adaptive* ]]; then
   SPP=${SPP:-1,1.125,1.25,1.5,2,3,4,6,8,16,32}
 else
@@ -35,11 +34,8 @@ for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .pov)
   [ -f "$refs/$name.exr" ] || "$bin" reference "$scene" --output "$refs/$name.exr" \
     --width 640 --height 480 --supersample 8
-  # focal_blur reaches POV-Ray's +AM2 +R3 and +R4 errors only at about 50 spp.
-  spp=$SPP
-  if [ -z "$given_spp" ] && [ "$name" = focal_blur ]; then spp="$SPP,64"; fi
   # shellcheck disable=SC2086
-  "$bin" converge "$scene" --reference "$refs/$name.exr" --spp "$spp" --seeds "$SEEDS" \
+  "$bin" converge "$scene" --reference "$refs/$name.exr" --spp "$SPP" --seeds "$SEEDS" \
     --threads "$THREADS" --povray --quiet --targets 0.01,0.005,0.0025 ${OPTIONS:-} \
     --output-dir "$OUT/$name"
 done

@@ -171,11 +171,10 @@ fn omnimax(dh: DVec3, rh: DVec3, uh: DVec3, aspect: f64, x: f64, y: f64) -> Opti
 /// lens is uniform over a stepped hexagon. A cell is HEX_CELL x aperture / (k + 1) wide
 /// (measured 0.561, 0.571 and 0.575 at aperture 2 for k = 1, 2, 3) and sqrt(3)/2 of that
 /// high (measured 0.90, 0.90, 0.88). scenes/focal_blur.pov with those counts converges to
-/// POV-Ray's image (160x120, 1024 spp: sqrt(B) 0.0000, 0.00025, 0.00068). Other counts up to
-/// 37 take the next grid: POV-Ray's lens for them is as many jittered squares placed
-/// unevenly, a different shape for each count, which the grid only approximates (the
-/// scene as it is, 16 samples: sqrt(B) 0.00126, against 0.00255 with the disc fitted
-/// before; 640x480, bias 0.0055 -> 0.0034).
+/// POV-Ray's image (160x120, 1024 spp: sqrt(B) 0.0000, 0.00025, 0.00068). 16 samples are
+/// measured ([`LENS_16`]); other counts up to 37 take the next grid: POV-Ray's lens for them
+/// is the grid below plus jittered squares placed unevenly, a different shape for each
+/// count, which the grid only approximates.
 const HEX_CELL: f64 = 0.2875;
 /// Beyond 37 samples POV-Ray's lens is another (at 64 and more a disc of clumps, from
 /// samples placed at random): the uniform disc fitted by RMSE against POV-Ray renders
@@ -193,10 +192,86 @@ fn hex_rings(blur_samples: u32) -> Option<i32> {
     }
 }
 
+/// POV-Ray 3.7's lens for 16 `blur_samples`, measured as the hexagonal grids were, with
+/// `variance 0` so that every sample is taken (four 4000x4000 renders of a small sphere far
+/// out of focus fitted together by least squares, scripts/lens_fit.py; the same with a 4:3
+/// camera, and at the aperture, angle and focus of scenes/focal_blur.pov): 16 squares, one a
+/// sample, each jittered whole, [`LENS_16_SIDE`] x aperture a side (fitted 0.1248-0.1253),
+/// centred on the one-ring hexagonal grid's 7 points (spacing 0.1445 x aperture along right,
+/// rows 0.1256 apart: [`HEX_CELL`]'s grid) and on 9 points placed unevenly, here in aperture
+/// units and in the order POV-Ray traces them (the grid first; then the three groups its
+/// stopping rule tests after, [`LensRule`], measured from which squares a pixel stopped
+/// after 11 or 15 samples saw). Sampled so, scenes/focal_blur.pov with `variance 0`
+/// converges to POV-Ray's image (160x120, 4 x 256 spp: sqrt(B) 0.0000).
+const LENS_16: [(f64, f64); 16] = [
+    (0.0, 0.0),
+    (-0.1445, 0.0),
+    (0.1445, 0.0),
+    (-0.07226, 0.12557),
+    (0.07226, 0.12557),
+    (-0.07226, -0.12557),
+    (0.07226, -0.12557),
+    (-0.08321, -0.02943),
+    (0.03419, 0.19519),
+    (0.16608, -0.13915),
+    (0.02692, -0.15074),
+    (-0.09618, -0.10141),
+    (0.04745, 0.04048),
+    (0.18195, -0.04291),
+    (-0.22015, 0.08003),
+    (-0.06509, 0.21597),
+];
+const LENS_16_SIDE: f64 = 0.125;
+
+/// POV-Ray's adaptive stop for a pixel's lens samples, measured for 16 `blur_samples` under
+/// its default `confidence` and `variance`: after the 7th, 11th and 15th sample (none
+/// before, none between) it stops if, in every colour channel, the samples' variance
+/// (sum of squared deviations over n - 1) is below the threshold for that count. Measured
+/// with a dim sphere seen through one lens square (a pixel's value is its hits over the
+/// samples it took, so it tells where it stopped): one hit of brightness c stops at n
+/// where c^2 / n is below the threshold (c = 0.043668, 0.093297, 0.155196 at 7, 11 and 15,
+/// bracketed to 1e-5); two hits among 7 stop below c = 0.034 (the variance's 0.0339, where
+/// a test of the samples' range would give 0.0437); a grey background of 0.3 or 0.6 moves
+/// nothing; red, green or grey alone stop at the same c. Where a scene gives `confidence`,
+/// `variance` or a minimum count the thresholds differ (even the default values written
+/// out measure otherwise) and penumbra takes every sample.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LensRule {
+    /// The lens samples POV-Ray takes at most, in its order (`lens_offset`'s cells).
+    pub samples: u32,
+    /// After how many samples the rule is tested, and the variance below which it stops.
+    pub checks: &'static [(u32, f64)],
+}
+
+const LENS_16_CHECKS: [(u32, f64); 3] = [(7, 2.7241e-4), (11, 7.9131e-4), (15, 1.60572e-3)];
+
+/// The stopping rule of the camera's focal blur where it is measured (see [`LensRule`]).
+pub fn lens_rule(camera: &Camera) -> Option<LensRule> {
+    let measured = camera.aperture > 0.0
+        && camera.default_blur_stop
+        && camera.blur_samples == 16
+        && camera.mesh.is_none();
+    measured.then_some(LensRule {
+        samples: 16,
+        checks: &LENS_16_CHECKS,
+    })
+}
+
 /// The lens point, along the unit right and up vectors, of a uniform `lens` sample in
 /// [0, 1)^2: the first coordinate picks the cell (its fraction places the point across
 /// it), the second places it up the cell, so that a stratified pair stays stratified.
 fn lens_offset(camera: &Camera, lens: (f64, f64)) -> (f64, f64) {
+    if camera.blur_samples == 16 {
+        let scaled = lens.0 * 16.0;
+        let cell = (scaled as usize).min(15);
+        let (x, y) = LENS_16[cell];
+        let across = scaled - cell as f64 - 0.5;
+        let a = camera.aperture;
+        return (
+            (x + across * LENS_16_SIDE) * a,
+            (y + (lens.1 - 0.5) * LENS_16_SIDE) * a,
+        );
+    }
     let Some(k) = hex_rings(camera.blur_samples) else {
         let (dx, dy) = concentric_disc(lens.0, lens.1);
         let radius = DISC_RADIUS * camera.aperture;
@@ -358,7 +433,7 @@ mod tests {
     /// wide), nothing outside them.
     #[test]
     fn the_lens_fills_its_hexagonal_grid_evenly() {
-        for (samples, k) in [(1, 1), (7, 1), (16, 2), (19, 2), (20, 3), (37, 3)] {
+        for (samples, k) in [(1, 1), (7, 1), (18, 2), (19, 2), (20, 3), (37, 3)] {
             let camera = blur_camera(samples);
             let w = HEX_CELL * 2.0 / f64::from(k + 1);
             let h = w * 0.75f64.sqrt();
@@ -383,6 +458,41 @@ mod tests {
         // Beyond 37 samples, the disc.
         let (x, y) = lens_offset(&blur_camera(38), (0.999, 0.5));
         assert!(((x * x + y * y).sqrt() - DISC_RADIUS * 2.0).abs() < 0.01);
+    }
+
+    /// The lens for 16 samples: an equal share of a uniform sample in each of its 16
+    /// squares, in their order, uniform within each.
+    #[test]
+    fn the_lens_of_sixteen_fills_its_squares_evenly() {
+        let camera = blur_camera(16);
+        let side = LENS_16_SIDE * camera.aperture;
+        for (cell, &(cx, cy)) in LENS_16.iter().enumerate() {
+            for (i, j) in [(0, 0), (7, 3), (15, 15)] {
+                let across = (f64::from(i) + 0.5) / 16.0;
+                let up = (f64::from(j) + 0.5) / 16.0;
+                let lens = ((cell as f64 + across) / 16.0, up);
+                let (x, y) = lens_offset(&camera, lens);
+                let expected = (
+                    cx * camera.aperture + (across - 0.5) * side,
+                    cy * camera.aperture + (up - 0.5) * side,
+                );
+                assert!((x - expected.0).abs() < 1e-12 && (y - expected.1).abs() < 1e-12);
+            }
+        }
+        // The one-ring grid's seven come first (a pixel's first test sees only them): the
+        // centre, two along right at the spacing, four half a spacing out on the rows.
+        let (w, h) = (0.1445, 0.12557);
+        let grid = [(0.0, 0.0), (-w, 0.0), (w, 0.0)].into_iter().chain(
+            [h, -h]
+                .into_iter()
+                .flat_map(|y| [(-w / 2.0, y), (w / 2.0, y)]),
+        );
+        for (a, b) in grid.zip(&LENS_16[..7]) {
+            assert!(
+                (a.0 - b.0).abs() < 1e-4 && (a.1 - b.1).abs() < 1e-4,
+                "{a:?} {b:?}"
+            );
+        }
     }
 
     /// POV-Ray blurs only when `blur_samples` is given.

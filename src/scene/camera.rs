@@ -17,6 +17,9 @@ pub struct Camera {
     pub focal_point: DVec3,
     /// POV-Ray's `blur_samples`, which also sets the shape of its lens (src/render/camera.rs).
     pub blur_samples: u32,
+    /// Whether POV-Ray's blur stops by its default rule: the scene gave no `confidence`,
+    /// `variance` or minimum count (src/render/camera.rs, [`crate::render::camera::LensRule`]).
+    pub default_blur_stop: bool,
     pub projection: Projection,
     /// The projection's horizontal and vertical angles in degrees (defaults resolved).
     pub angles: (f64, f64),
@@ -192,6 +195,8 @@ pub struct CameraSpec {
     pub focal_point: DVec3,
     /// POV-Ray's rays per pixel for blur; penumbra's lens samples are the pixel's samples.
     pub blur_samples: u32,
+    /// No `confidence`, `variance` or minimum count given: POV-Ray's default stop.
+    pub default_blur_stop: bool,
     pub projection: Projection,
     /// Spherical's vertical angle (`angle h, v`).
     pub vertical_angle: Option<f64>,
@@ -216,6 +221,7 @@ impl Default for CameraSpec {
             aperture: 0.0,
             focal_point: DVec3::ZERO,
             blur_samples: 0,
+            default_blur_stop: true,
             projection: Projection::Perspective,
             vertical_angle: None,
             up_or_right_given: false,
@@ -308,6 +314,7 @@ impl CameraSpec {
             },
             focal_point: t.point(self.focal_point),
             blur_samples: self.blur_samples,
+            default_blur_stop: self.default_blur_stop,
             projection: self.projection,
             angles: self.projection.angles(self.angle, self.vertical_angle),
             normal: self.normal.clone(),

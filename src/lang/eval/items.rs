@@ -367,13 +367,16 @@ impl Evaluator<'_> {
                         // POV-Ray 3.7 also takes `blur_samples min, max`.
                         if ev.eat(Punct::Comma)? {
                             spec.blur_samples = ev.float()?.max(0.0) as u32;
+                            spec.default_blur_stop = false;
                         }
                     }
                     "confidence" | "variance" => {
-                        // Settings of POV-Ray's adaptive blur sampling; penumbra samples the lens
-                        // over a pixel's samples instead.
+                        // Settings of POV-Ray's adaptive blur sampling: its default rule is
+                        // the one measured (src/render/camera.rs); with others penumbra
+                        // takes every lens sample.
                         ev.next()?;
                         ev.float()?;
+                        spec.default_blur_stop = false;
                     }
                     "normal" => {
                         ev.next()?;
