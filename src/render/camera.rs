@@ -200,8 +200,7 @@ fn hex_rings(blur_samples: u32) -> Option<i32> {
 /// centred on the one-ring hexagonal grid's 7 points (spacing 0.1445 x aperture along right,
 /// rows 0.1256 apart: [`HEX_CELL`]'s grid) and on 9 points placed unevenly, here in aperture
 /// units and in the order POV-Ray traces them (the grid first; then the three groups its
-/// stopping rule tests after, [`LensRule`], measured from which squares a pixel stopped
-/// after 11 or 15 samples saw). Sampled so, scenes/focal_blur.pov with `variance 0`
+/// stopping rule tests after, [`LensRule`]). Sampled so, scenes/focal_blur.pov with `variance 0`
 /// converges to POV-Ray's image (160x120, 4 x 256 spp: sqrt(B) 0.0000).
 const LENS_16: [(f64, f64); 16] = [
     (0.0, 0.0),
@@ -223,38 +222,77 @@ const LENS_16: [(f64, f64); 16] = [
 ];
 const LENS_16_SIDE: f64 = 0.125;
 
-/// POV-Ray's adaptive stop for a pixel's lens samples, measured for 16 `blur_samples` under
-/// its default `confidence` and `variance`: after the 7th, 11th and 15th sample (none
-/// before, none between) it stops if, in every colour channel, the samples' variance
-/// (sum of squared deviations over n - 1) is below the threshold for that count. Measured
-/// with a dim sphere seen through one lens square (a pixel's value is its hits over the
-/// samples it took, so it tells where it stopped): one hit of brightness c stops at n
-/// where c^2 / n is below the threshold (c = 0.043668, 0.093297, 0.155196 at 7, 11 and 15,
-/// bracketed to 1e-5); two hits among 7 stop below c = 0.034 (the variance's 0.0339, where
-/// a test of the samples' range would give 0.0437); a grey background of 0.3 or 0.6 moves
-/// nothing; red, green or grey alone stop at the same c. Where a scene gives `confidence`,
-/// `variance` or a minimum count the thresholds differ (even the default values written
-/// out measure otherwise) and penumbra takes every sample.
+/// POV-Ray's adaptive stop for a pixel's lens samples under its default `confidence` and
+/// `variance`, measured for 16, 19 and 37 `blur_samples` (7 never stops early): it traces
+/// the lens's cells in an order of its own and, after certain counts (16: the 7th, 11th,
+/// 15th; 19: 7th, 13th; 37: 7th, 13th, 19th, then every 4th to the 35th; none between),
+/// stops if in every colour channel the samples' variance (sum of squared deviations over
+/// n - 1) is below that count's threshold. Measured with a dim sphere seen through one
+/// cell (a pixel's value is its hits over the samples it took, so it tells where it
+/// stopped): one hit of brightness c stops at n where c^2 / n is below the threshold, found
+/// by bisection to 1e-4 of c; two hits among 7 stop below c = 0.034 (the variance's 0.0339,
+/// where a test of the samples' range would give 0.0437); a grey background of 0.3 or 0.6
+/// moves nothing; red, green or grey alone stop at the same c. The thresholds depend on the
+/// count as well as on n (at n = 7: 16 samples 2.72e-4, 19 2.16e-4, 37 9.17e-5). The order
+/// was read from which cells pixels that stopped at each count saw (a background graded
+/// across the lens set where they stopped, a bright small sphere showed the cells sampled):
+/// the grid's coarsest hexagon first, then rings inward and outward. Where a scene gives
+/// `confidence`, `variance` or a minimum count the thresholds differ (even the default
+/// values written out measure otherwise: one hit of 0.2 stops at 7) and penumbra takes
+/// every sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LensRule {
-    /// The lens samples POV-Ray takes at most, in its order (`lens_offset`'s cells).
-    pub samples: u32,
+    /// The lens's cells ([`lens_offset`]'s numbering) in the order POV-Ray traces them.
+    pub order: &'static [u8],
     /// After how many samples the rule is tested, and the variance below which it stops.
     pub checks: &'static [(u32, f64)],
 }
 
-const LENS_16_CHECKS: [(u32, f64); 3] = [(7, 2.7241e-4), (11, 7.9131e-4), (15, 1.60572e-3)];
+impl LensRule {
+    /// The `lens` value of [`camera_ray`] for POV-Ray's sample `j`, jittered by `(a, b)`.
+    pub fn lens(&self, j: usize, (a, b): (f64, f64)) -> (f64, f64) {
+        let cells = self.order.len() as f64;
+        ((f64::from(self.order[j]) + a) / cells, b)
+    }
+}
+
+/// [`LENS_16`] is in POV-Ray's order already.
+const ORDER_16: [u8; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
+const CHECKS_16: [(u32, f64); 3] = [(7, 2.72413e-4), (11, 7.91294e-4), (15, 1.60572e-3)];
+/// The 19-cell grid: its coarse hexagon (centre, two along right, four on the outer rows),
+/// the outer ring's other six, then the inner ring.
+const ORDER_19: [u8; 19] = [
+    9, 7, 11, 0, 2, 16, 18, 1, 3, 6, 12, 15, 17, 4, 5, 8, 10, 13, 14,
+];
+const CHECKS_19: [(u32, f64); 2] = [(7, 2.16460e-4), (13, 9.20880e-4)];
+/// The 37-cell grid in groups of 7, 6, 6, 4, 4, 4, 4 and 2 (the last pair on the vertical
+/// axis next to the centre).
+const ORDER_37: [u8; 37] = [
+    18, 15, 21, 0, 3, 33, 36, 5, 7, 16, 20, 29, 31, 11, 12, 17, 19, 24, 25, 9, 14, 22, 27, 4, 8,
+    28, 32, 1, 2, 34, 35, 10, 13, 23, 26, 6, 30,
+];
+const CHECKS_37: [(u32, f64); 7] = [
+    (7, 9.16733e-5),
+    (13, 3.90879e-4),
+    (19, 9.18981e-4),
+    (23, 1.40305e-3),
+    (27, 1.94514e-3),
+    (31, 2.66579e-3),
+    (35, 3.48264e-3),
+];
 
 /// The stopping rule of the camera's focal blur where it is measured (see [`LensRule`]).
 pub fn lens_rule(camera: &Camera) -> Option<LensRule> {
-    let measured = camera.aperture > 0.0
-        && camera.default_blur_stop
-        && camera.blur_samples == 16
-        && camera.mesh.is_none();
-    measured.then_some(LensRule {
-        samples: 16,
-        checks: &LENS_16_CHECKS,
-    })
+    if camera.aperture <= 0.0 || !camera.default_blur_stop || camera.mesh.is_some() {
+        return None;
+    }
+    let (order, checks): (&'static [u8], &'static [(u32, f64)]) = match camera.blur_samples {
+        16 => (&ORDER_16, &CHECKS_16),
+        19 => (&ORDER_19, &CHECKS_19),
+        37 => (&ORDER_37, &CHECKS_37),
+        _ => return None,
+    };
+    Some(LensRule { order, checks })
 }
 
 /// The lens point, along the unit right and up vectors, of a uniform `lens` sample in

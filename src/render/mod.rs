@@ -588,7 +588,7 @@ const PLAIN_FLOOR_SHARE: u32 = 8;
 
 /// Whether a sample's value varies, beyond its position in the pixel, in ways that the
 /// pilot's one sample per neighbour can miss: a lens sampled one ray a sample (under
-/// POV-Ray's measured rule a sample averages 7 to 16 rays spread over the lens: at 640x480
+/// POV-Ray's measured rule a sample averages 7 to 37 rays spread over the lens: at 640x480
 /// scenes/focal_blur.pov's RMSE at 4 and 6 spp is 1-3.5% lower with the eighth), a jittered area light
 /// (away from penumbrae too), media, radiosity, photons, dispersion. Area lights' shadows
 /// are not among them: the pilot finds their penumbrae and treats them apart.
@@ -1110,7 +1110,7 @@ fn sample_camera_ray(
 }
 
 /// One sample of a pixel under POV-Ray's adaptive focal blur ([`camera::LensRule`]): the
-/// lens's squares traced in POV-Ray's order through one point of the pixel, each once, until
+/// lens's cells traced in POV-Ray's order through one point of the pixel, each once, until
 /// the rule stops them, and their mean. POV-Ray's pixel is that mean, whose expectation the
 /// stop (which depends on the samples) moves; averaging independent copies of it converges
 /// to POV-Ray's image, which a lens sampled one ray at a time cannot (160x120, 4 x 256 spp,
@@ -1129,12 +1129,12 @@ fn povray_lens_sample(
     let sy = 0.5 - (y as f64 + v) / h as f64;
     let (mut sum, mut squares) = (DVec3::ZERO, DVec3::ZERO);
     let mut checks = rule.checks.iter().peekable();
-    for j in 0..rule.samples {
-        // Square j of the lens, jittered by this sample's own values.
-        let mut sub = sampler.subsample(j, rule.samples);
+    let samples = rule.order.len() as u32;
+    for j in 0..samples {
+        // POV-Ray's sample j, jittered by this sample's own values.
+        let mut sub = sampler.subsample(j, samples);
         sub.set_dimension(layout.dimension(0, Purpose::Lens));
-        let (a, b) = sub.get_2d();
-        let lens = ((f64::from(j) + a) / f64::from(rule.samples), b);
+        let lens = rule.lens(j as usize, sub.get_2d());
         let l = camera_ray(&scene.camera, sx, sy, lens)
             .map_or(DVec3::ZERO, |ray| radiance(&ray, &mut sub));
         sum += l;
@@ -1148,7 +1148,7 @@ fn povray_lens_sample(
             }
         }
     }
-    sum / f64::from(rule.samples)
+    sum / f64::from(samples)
 }
 
 /// Photons shot per pass (per sample index) in a scene with photon targets.
@@ -1646,56 +1646,88 @@ mod tests {
         assert_eq!(allocate(&[kept], 1.0, 4), vec![0]);
     }
 
-    /// POV-Ray's stop for 16 lens samples, on either side of each measured threshold: with
-    /// one lens square seeing a brightness c and the rest black, a sample takes 7, 11, 15
-    /// or 16 rays as POV-Ray's pixel does (c = 0.043668, 0.093297, 0.155196), and is their
-    /// mean; two squares among the first seven stop it below c = 0.0339 (not at the one
-    /// square's 0.0437: the rule tests a variance, not a range), one channel as the three.
+    /// POV-Ray's stop for 16, 19 and 37 lens samples, on either side of each measured
+    /// threshold: with its first lens cell seeing a brightness c and the rest black, a
+    /// sample takes as many rays as POV-Ray's pixel does, and is their mean; two cells among
+    /// the first seven stop it below c = 0.0339 at 16 samples (not at the one cell's 0.0437:
+    /// the rule tests a variance, not a range), one channel as the three.
     #[test]
     fn the_lens_rule_stops_where_povray_does() {
-        let camera = "camera { location <0, 0, -5> look_at 0 aperture 1 blur_samples 16
-                      focal_point 0 }";
-        let loaded = crate::lang::load_scene_source("t.pov", camera, &Default::default());
-        let scene = PreparedScene::new(&loaded.expect("scene loads").scene);
-        let rule = camera::lens_rule(&scene.camera).expect("16 samples are measured");
-        let layout = scene.dimension_layout();
-        let taken = |seen: &[DVec3]| {
+        let scene = |settings: &str| {
+            let src = format!(
+                "camera {{ location <0, 0, -5> look_at 0 aperture 1 focal_point 0 {settings} }}"
+            );
+            let loaded = crate::lang::load_scene_source("t.pov", &src, &Default::default());
+            PreparedScene::new(&loaded.expect("scene loads").scene)
+        };
+        let taken = |scene: &PreparedScene, seen: &[DVec3]| {
+            let rule = camera::lens_rule(&scene.camera).expect("a measured count");
+            let layout = scene.dimension_layout();
             let mut rays = 0;
             let mut sampler = PixelSampler::new(4);
             sampler.start(3, 2, 1, 99);
-            let mean =
-                povray_lens_sample(&scene, &layout, rule, (3, 2, 8, 8), &mut sampler, |_, _| {
-                    rays += 1;
-                    seen.get(rays - 1).copied().unwrap_or(DVec3::ZERO)
-                });
+            let pixel = (3, 2, 8, 8);
+            let mean = povray_lens_sample(scene, &layout, rule, pixel, &mut sampler, |_, _| {
+                rays += 1;
+                seen.get(rays - 1).copied().unwrap_or(DVec3::ZERO)
+            });
             (rays, mean)
         };
-        let thresholds = [(0.043668, 7, 11), (0.093297, 11, 15), (0.155196, 15, 16)];
-        for (c, below, above) in thresholds {
-            for (c, n) in [(c * 0.999, below), (c * 1.001, above)] {
-                let (rays, mean) = taken(&[DVec3::splat(c)]);
-                assert_eq!(rays, n, "c = {c}");
-                assert!((mean - DVec3::splat(c / n as f64)).abs().max_element() < 1e-15);
-                assert_eq!(
-                    taken(&[DVec3::new(0.0, c, 0.0)]).0,
-                    n,
-                    "green alone, c = {c}"
-                );
+        // One cell's brightness c at a threshold, and the rays taken below and above it.
+        type Threshold = (f64, usize, usize);
+        let measured: [(u32, &[Threshold]); 3] = [
+            (
+                16,
+                &[(0.043668, 7, 11), (0.093297, 11, 15), (0.155196, 15, 16)],
+            ),
+            (19, &[(0.038926, 7, 13), (0.109414, 13, 19)]),
+            (
+                37,
+                &[
+                    (0.025332, 7, 13),
+                    (0.071284, 13, 19),
+                    (0.132139, 19, 23),
+                    (0.179639, 23, 27),
+                    (0.229170, 27, 31),
+                    (0.287471, 31, 35),
+                    (0.349131, 35, 37),
+                ],
+            ),
+        ];
+        for (count, thresholds) in measured {
+            let scene = scene(&format!("blur_samples {count}"));
+            for &(c, below, above) in thresholds {
+                for (c, n) in [(c * 0.999, below), (c * 1.001, above)] {
+                    let (rays, mean) = taken(&scene, &[DVec3::splat(c)]);
+                    assert_eq!(rays, n, "{count} samples, c = {c}");
+                    assert!((mean - DVec3::splat(c / n as f64)).abs().max_element() < 1e-15);
+                    let green = taken(&scene, &[DVec3::new(0.0, c, 0.0)]).0;
+                    assert_eq!(green, n, "{count} samples, green alone, c = {c}");
+                }
             }
-        }
-        let two = |c: f64| taken(&[DVec3::splat(c), DVec3::ZERO, DVec3::splat(c)]).0;
-        assert_eq!((two(0.0335), two(0.0345)), (7, 11));
-        // Where every square agrees, the first seven decide.
-        assert_eq!(taken(&[DVec3::splat(0.5); 16]), (7, DVec3::splat(0.5)));
-        // Written settings (even the defaults) or a minimum count: no rule measured.
-        for settings in ["variance 1/128", "confidence 0.9", "blur_samples 4, 16"] {
-            let src = format!(
-                "camera {{ location <0, 0, -5> look_at 0 aperture 1 blur_samples 16
-                 focal_point 0 {settings} }}"
+            // Where every cell agrees, the first seven decide.
+            assert_eq!(
+                taken(&scene, &[DVec3::splat(0.5); 37]),
+                (7, DVec3::splat(0.5))
             );
-            let loaded = crate::lang::load_scene_source("t.pov", &src, &Default::default());
-            let scene = PreparedScene::new(&loaded.expect("scene loads").scene);
-            assert_eq!(camera::lens_rule(&scene.camera), None, "{settings}");
+        }
+        let sixteen = scene("blur_samples 16");
+        let two = |c: f64| taken(&sixteen, &[DVec3::splat(c), DVec3::ZERO, DVec3::splat(c)]).0;
+        assert_eq!((two(0.0335), two(0.0345)), (7, 11));
+        // Seven samples never stop early; written settings (even the defaults) or a minimum
+        // count: no rule measured.
+        let unmeasured = [
+            "blur_samples 7",
+            "blur_samples 16 variance 1/128",
+            "blur_samples 19 confidence 0.9",
+            "blur_samples 4, 16",
+        ];
+        for settings in unmeasured {
+            assert_eq!(
+                camera::lens_rule(&scene(settings).camera),
+                None,
+                "{settings}"
+            );
         }
     }
 
