@@ -236,16 +236,20 @@ const LENS_16_SIDE: f64 = 0.125;
 /// count as well as on n (at n = 7: 16 samples 2.72e-4, 19 2.16e-4, 37 9.17e-5). The order
 /// was read from which cells pixels that stopped at each count saw (a background graded
 /// across the lens set where they stopped, a bright small sphere showed the cells sampled):
-/// the grid's coarsest hexagon first, then rings inward and outward. Where a scene gives
-/// `confidence`, `variance` or a minimum count the thresholds differ (even the default
-/// values written out measure otherwise: one hit of 0.2 stops at 7) and penumbra takes
-/// every sample.
+/// the grid's coarsest hexagon first, then rings inward and outward. The thresholds scale
+/// with `variance` ([`DEFAULT_VARIANCE`]); `confidence` changes them otherwise (16 samples,
+/// variance 1e-4: one hit stops at 7 below c = 0.0505, 0.0437, 0.0394 for 0.5, 0.9, 0.975,
+/// at 11 below 0.0982, 0.0933, 0.0901: not one factor), so only the default 0.9 is
+/// followed; under another, or a minimum count, penumbra takes every sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LensRule {
     /// The lens's cells ([`lens_offset`]'s numbering) in the order POV-Ray traces them.
     pub order: &'static [u8],
-    /// After how many samples the rule is tested, and the variance below which it stops.
+    /// After how many samples the rule is tested, and the variance below which it stops
+    /// under the default `variance`.
     pub checks: &'static [(u32, f64)],
+    /// The written `variance` over the default: the thresholds scale with it.
+    pub scale: f64,
 }
 
 impl LensRule {
@@ -281,9 +285,17 @@ const CHECKS_37: [(u32, f64); 7] = [
     (35, 3.48264e-3),
 ];
 
+/// POV-Ray's `variance` when none is written: its thresholds are those of `variance 1e-4`
+/// written out (16 samples: one hit stops at 7 below c = 0.043662-0.043672 either way), not
+/// of the 1/128 its documentation gives. Written values scale the thresholds in proportion:
+/// one hit stops at 7 below c^2 = 19.10 x variance at 1/128, 1/1024 and 1/8192 (0.3863,
+/// 0.1372, 0.0485).
+const DEFAULT_VARIANCE: f64 = 1e-4;
+
 /// The stopping rule of the camera's focal blur where it is measured (see [`LensRule`]).
 pub fn lens_rule(camera: &Camera) -> Option<LensRule> {
-    if camera.aperture <= 0.0 || !camera.default_blur_stop || camera.mesh.is_some() {
+    let variance = camera.blur_variance?;
+    if camera.aperture <= 0.0 || camera.mesh.is_some() {
         return None;
     }
     let (order, checks): (&'static [u8], &'static [(u32, f64)]) = match camera.blur_samples {
@@ -292,7 +304,11 @@ pub fn lens_rule(camera: &Camera) -> Option<LensRule> {
         37 => (&ORDER_37, &CHECKS_37),
         _ => return None,
     };
-    Some(LensRule { order, checks })
+    Some(LensRule {
+        order,
+        checks,
+        scale: variance / DEFAULT_VARIANCE,
+    })
 }
 
 /// The lens point, along the unit right and up vectors, of a uniform `lens` sample in

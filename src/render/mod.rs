@@ -1143,7 +1143,7 @@ fn povray_lens_sample(
         if let Some(&(_, threshold)) = checks.next_if(|&&(at, _)| at == n) {
             let nf = f64::from(n);
             let variance = (squares - sum * sum / nf) / (nf - 1.0);
-            if variance.max_element() < threshold {
+            if variance.max_element() < threshold * rule.scale {
                 return sum / nf;
             }
         }
@@ -1714,12 +1714,17 @@ mod tests {
         let sixteen = scene("blur_samples 16");
         let two = |c: f64| taken(&sixteen, &[DVec3::splat(c), DVec3::ZERO, DVec3::splat(c)]).0;
         assert_eq!((two(0.0335), two(0.0345)), (7, 11));
-        // Seven samples never stop early; written settings (even the defaults) or a minimum
-        // count: no rule measured.
+        // A written variance scales the thresholds (measured at 1/128: one hit stops at 7
+        // below c = 0.3859-0.3867); confidence 0.9 written is the default.
+        let written = scene("blur_samples 16 variance 1/128 confidence 0.9");
+        let c = 0.043668 * (1.0 / 128.0 / 1e-4f64).sqrt();
+        assert_eq!(taken(&written, &[DVec3::splat(c * 0.999)]).0, 7);
+        assert_eq!(taken(&written, &[DVec3::splat(c * 1.001)]).0, 11);
+        // Seven samples never stop early; another confidence or a minimum count: no rule
+        // measured.
         let unmeasured = [
             "blur_samples 7",
-            "blur_samples 16 variance 1/128",
-            "blur_samples 19 confidence 0.9",
+            "blur_samples 16 confidence 0.5",
             "blur_samples 4, 16",
         ];
         for settings in unmeasured {
@@ -1750,7 +1755,7 @@ mod tests {
         assert_eq!(share(lens, "", ""), FLOOR_SHARE);
         let measured = "aperture 0.5 focal_point 0 blur_samples 16";
         assert_eq!(share(measured, "", ""), PLAIN_FLOOR_SHARE);
-        let written = "aperture 0.5 focal_point 0 blur_samples 16 variance 1/128";
+        let written = "aperture 0.5 focal_point 0 blur_samples 16 confidence 0.5";
         assert_eq!(share(written, "", ""), FLOOR_SHARE);
         assert_eq!(share("", "jitter", ""), FLOOR_SHARE);
         assert_eq!(

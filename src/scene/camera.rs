@@ -17,9 +17,10 @@ pub struct Camera {
     pub focal_point: DVec3,
     /// POV-Ray's `blur_samples`, which also sets the shape of its lens (src/render/camera.rs).
     pub blur_samples: u32,
-    /// Whether POV-Ray's blur stops by its default rule: the scene gave no `confidence`,
-    /// `variance` or minimum count (src/render/camera.rs, [`crate::render::camera::LensRule`]).
-    pub default_blur_stop: bool,
+    /// The `variance` of POV-Ray's rule for stopping a pixel's lens samples early, where the
+    /// rule is measured: at `confidence` 0.9 (the default) without a minimum count
+    /// (src/render/camera.rs, [`crate::render::camera::LensRule`]); `None` elsewhere.
+    pub blur_variance: Option<f64>,
     pub projection: Projection,
     /// The projection's horizontal and vertical angles in degrees (defaults resolved).
     pub angles: (f64, f64),
@@ -195,8 +196,12 @@ pub struct CameraSpec {
     pub focal_point: DVec3,
     /// POV-Ray's rays per pixel for blur; penumbra's lens samples are the pixel's samples.
     pub blur_samples: u32,
-    /// No `confidence`, `variance` or minimum count given: POV-Ray's default stop.
-    pub default_blur_stop: bool,
+    /// `variance` (POV-Ray 3.7 stops as if it were 1e-4 when none is given, not the 1/128
+    /// its documentation names: measured, src/render/camera.rs), `confidence`, and whether
+    /// `blur_samples` gave a minimum count.
+    pub blur_variance: f64,
+    pub blur_confidence: f64,
+    pub blur_minimum: bool,
     pub projection: Projection,
     /// Spherical's vertical angle (`angle h, v`).
     pub vertical_angle: Option<f64>,
@@ -221,7 +226,9 @@ impl Default for CameraSpec {
             aperture: 0.0,
             focal_point: DVec3::ZERO,
             blur_samples: 0,
-            default_blur_stop: true,
+            blur_variance: 1e-4,
+            blur_confidence: 0.9,
+            blur_minimum: false,
             projection: Projection::Perspective,
             vertical_angle: None,
             up_or_right_given: false,
@@ -314,7 +321,8 @@ impl CameraSpec {
             },
             focal_point: t.point(self.focal_point),
             blur_samples: self.blur_samples,
-            default_blur_stop: self.default_blur_stop,
+            blur_variance: (self.blur_confidence == 0.9 && !self.blur_minimum)
+                .then_some(self.blur_variance),
             projection: self.projection,
             angles: self.projection.angles(self.angle, self.vertical_angle),
             normal: self.normal.clone(),

@@ -353,30 +353,9 @@ impl Evaluator<'_> {
                             spec.vertical_angle = Some(ev.float()?);
                         }
                     }
-                    "aperture" => {
+                    "aperture" | "focal_point" | "blur_samples" | "confidence" | "variance" => {
                         ev.next()?;
-                        spec.aperture = ev.float()?.max(0.0);
-                    }
-                    "focal_point" => {
-                        ev.next()?;
-                        spec.focal_point = ev.vector3()?;
-                    }
-                    "blur_samples" => {
-                        ev.next()?;
-                        spec.blur_samples = ev.float()?.max(0.0) as u32;
-                        // POV-Ray 3.7 also takes `blur_samples min, max`.
-                        if ev.eat(Punct::Comma)? {
-                            spec.blur_samples = ev.float()?.max(0.0) as u32;
-                            spec.default_blur_stop = false;
-                        }
-                    }
-                    "confidence" | "variance" => {
-                        // Settings of POV-Ray's adaptive blur sampling: its default rule is
-                        // the one measured (src/render/camera.rs); with others penumbra
-                        // takes every lens sample.
-                        ev.next()?;
-                        ev.float()?;
-                        spec.default_blur_stop = false;
+                        ev.focal_blur_setting(word, spec)?;
                     }
                     "normal" => {
                         ev.next()?;
@@ -403,6 +382,26 @@ impl Evaluator<'_> {
                 Ok(())
             },
         )
+    }
+
+    /// A focal blur keyword's value (the keyword read). `confidence` and `variance` set
+    /// POV-Ray's rule for stopping a pixel's lens samples early (src/render/camera.rs).
+    fn focal_blur_setting(&mut self, word: &str, spec: &mut CameraSpec) -> R<()> {
+        match word {
+            "aperture" => spec.aperture = self.float()?.max(0.0),
+            "focal_point" => spec.focal_point = self.vector3()?,
+            "blur_samples" => {
+                spec.blur_samples = self.float()?.max(0.0) as u32;
+                // POV-Ray 3.7 also takes `blur_samples min, max`.
+                if self.eat(Punct::Comma)? {
+                    spec.blur_samples = self.float()?.max(0.0) as u32;
+                    spec.blur_minimum = true;
+                }
+            }
+            "confidence" => spec.blur_confidence = self.float()?,
+            _ => spec.blur_variance = self.float()?.max(0.0),
+        }
+        Ok(())
     }
 
     pub(super) fn light_source(&mut self) -> R<Light> {
