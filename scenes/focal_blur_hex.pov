@@ -1,5 +1,5 @@
-// Focal blur with 19 samples: the whole of POV-Ray's 19-cell lens grid, which penumbra samples
-// exactly (16 samples, scenes/focal_blur.pov, are placed otherwise by POV-Ray).
+// Focal blur with 19 samples: the whole of POV-Ray's 19-cell lens grid, traced in POV-Ray's order
+// under its rule for stopping a pixel's lens samples early (src/render/camera.rs).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 

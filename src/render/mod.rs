@@ -1260,6 +1260,7 @@ fn render_indices(
         photons,
         window,
         layout: *integrator.layout(),
+        lens_rule: camera::lens_rule(&scene.camera),
         integrators: [integrator, fixed_integrator],
         progress,
         done: AtomicU64::new(tiles.len() as u64 * batch),
@@ -1308,6 +1309,8 @@ struct TileJob<'a> {
     photons: Option<&'a PhotonBatch<'a>>,
     window: Option<PixelWindow>,
     layout: dimensions::DimensionLayout,
+    /// POV-Ray's rule for the camera's lens samples, where it is measured.
+    lens_rule: Option<camera::LensRule>,
     /// The render's own integrator and the fixed-count one ([`pass_integrators`]).
     integrators: [Integrator<'a>; 2],
     progress: &'a dyn Progress,
@@ -1400,7 +1403,7 @@ impl TileJob<'_> {
                 sampler.set_position(x as u32, y as u32, position.seed, point);
             }
             let pixel = (x, y, w, h);
-            let l = match camera::lens_rule(&self.scene.camera) {
+            let l = match self.lens_rule {
                 Some(rule) => {
                     povray_lens_sample(self.scene, &self.layout, rule, pixel, sampler, |r, s| {
                         integrator.radiance(r, s, counts)

@@ -194,11 +194,13 @@ pub struct CameraSpec {
     pub angle: Option<f64>,
     pub aperture: f64,
     pub focal_point: DVec3,
-    /// POV-Ray's rays per pixel for blur; penumbra's lens samples are the pixel's samples.
+    /// POV-Ray's rays per pixel for blur: where its stopping rule is measured a penumbra
+    /// sample traces them as POV-Ray does, elsewhere its lens points are the pixel's samples.
     pub blur_samples: u32,
     /// `variance` (POV-Ray 3.7 stops as if it were 1e-4 when none is given, not the 1/128
-    /// its documentation names: measured, src/render/camera.rs), `confidence`, and whether
-    /// `blur_samples` gave a minimum count.
+    /// its documentation names: measured, src/render/camera.rs), `confidence` (the rule is
+    /// followed only at 0.9, as written or by default), and whether `blur_samples` gave a
+    /// minimum count.
     pub blur_variance: f64,
     pub blur_confidence: f64,
     pub blur_minimum: bool,
