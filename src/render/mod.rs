@@ -1085,6 +1085,22 @@ fn allocate(pixels: &[AdaptivePixel], average: f64, floor_share: u32) -> Vec<u32
         .collect()
 }
 
+/// Where the sample `sampler` has started lies in pixel (x, y) of a w x h image: its point
+/// in the pixel, and the screen coordinates (in [-1/2, 1/2], y up) a camera takes.
+fn sample_position(
+    layout: &dimensions::DimensionLayout,
+    (x, y, w, h): (usize, usize, usize, usize),
+    sampler: &mut PixelSampler,
+) -> ((f64, f64), (f64, f64)) {
+    sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
+    let (u, v) = sampler.pixel_position();
+    let screen = (
+        (x as f64 + u) / w as f64 - 0.5,
+        0.5 - (y as f64 + v) / h as f64,
+    );
+    ((u, v), screen)
+}
+
 /// The camera ray of the sample `sampler` has started, for pixel (x, y) of a w x h image.
 fn sample_camera_ray(
     scene: &PreparedScene,
@@ -1092,13 +1108,10 @@ fn sample_camera_ray(
     (x, y, w, h): (usize, usize, usize, usize),
     sampler: &mut PixelSampler,
 ) -> Option<Ray> {
-    sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
-    let (u, v) = sampler.pixel_position();
+    let (in_pixel, (sx, sy)) = sample_position(layout, (x, y, w, h), sampler);
     if let Some(mesh) = &scene.mesh_camera {
-        return mesh.ray((x, y, w, h), (u, v));
+        return mesh.ray((x, y, w, h), in_pixel);
     }
-    let sx = (x as f64 + u) / w as f64 - 0.5;
-    let sy = 0.5 - (y as f64 + v) / h as f64;
     // A pinhole draws no lens point (its dimensions are fixed, so nothing later moves).
     let lens = if scene.camera.aperture > 0.0 {
         sampler.set_dimension(layout.dimension(0, Purpose::Lens));
@@ -1119,14 +1132,11 @@ fn povray_lens_sample(
     scene: &PreparedScene,
     layout: &dimensions::DimensionLayout,
     rule: camera::LensRule,
-    (x, y, w, h): (usize, usize, usize, usize),
+    pixel: (usize, usize, usize, usize),
     sampler: &mut PixelSampler,
     mut radiance: impl FnMut(&Ray, &mut PixelSampler) -> DVec3,
 ) -> DVec3 {
-    sampler.set_dimension(layout.dimension(0, Purpose::PixelPosition));
-    let (u, v) = sampler.pixel_position();
-    let sx = (x as f64 + u) / w as f64 - 0.5;
-    let sy = 0.5 - (y as f64 + v) / h as f64;
+    let (_, (sx, sy)) = sample_position(layout, pixel, sampler);
     let (mut sum, mut squares) = (DVec3::ZERO, DVec3::ZERO);
     let mut checks = rule.checks.iter().peekable();
     let samples = rule.order.len() as u32;
