@@ -4,6 +4,18 @@
 
 use glam::DVec3;
 
+/// `x^e` for the exponents finishes hold. Most are whole numbers (brilliance 2, phong_size
+/// 40, roughness 0.05 is 20): those are a few multiplications, where `powf` took 1.8% of
+/// scenes/checker.pov's instructions. They agree with `powf` to a few units in the last
+/// place.
+fn power(x: f64, e: f64) -> f64 {
+    if e.fract() == 0.0 && e.abs() <= 256.0 {
+        x.powi(e as i32)
+    } else {
+        x.powf(e)
+    }
+}
+
 /// Diffuse: `diffuse * (N.L)^brilliance`, no 1/pi, zero when N.L < 1e-10.
 pub fn diffuse_factor(diffuse: f64, brilliance: f64, n_dot_l: f64) -> f64 {
     if n_dot_l < 1e-10 || diffuse == 0.0 {
@@ -12,7 +24,7 @@ pub fn diffuse_factor(diffuse: f64, brilliance: f64, n_dot_l: f64) -> f64 {
     let c = if brilliance == 1.0 {
         n_dot_l
     } else {
-        n_dot_l.powf(brilliance)
+        power(n_dot_l, brilliance)
     };
     diffuse * c
 }
@@ -72,7 +84,7 @@ pub fn phong_factor(phong: f64, phong_size: f64, n: DVec3, d: DVec3, l: DVec3) -
     let r = d - 2.0 * d.dot(n) * n;
     let c = r.dot(l);
     if c > 0.0 {
-        phong * c.powf(phong_size)
+        phong * power(c, phong_size)
     } else {
         0.0
     }
@@ -90,7 +102,7 @@ pub fn specular_factor(specular: f64, roughness: f64, n: DVec3, d: DVec3, l: DVe
     }
     let c = h.dot(n) / len;
     if c > 0.0 {
-        specular * c.powf(1.0 / roughness)
+        specular * power(c, 1.0 / roughness)
     } else {
         0.0
     }

@@ -133,8 +133,10 @@ impl Path {
 
 /// Everything shading needs to know about one hit, built once per hit in `trace`.
 struct Shading<'s> {
-    /// The hit point with its outward geometric normal (`surface.normal`).
-    surface: SurfacePoint,
+    /// The hit point with its outward geometric normal (`surface.normal`). Borrowed from
+    /// the caller's frame: held by value, its 136 bytes were copied into every shading
+    /// (a call to memcpy, 4% of scenes/checker.pov's time in perf).
+    surface: &'s SurfacePoint,
     /// The incoming ray's unit direction.
     d: DVec3,
     /// The shading normal, perturbed by the texture's `normal`, turned to face the ray.
@@ -163,7 +165,7 @@ impl Shading<'_> {
     fn texture_point(&self) -> TexturePoint {
         TexturePoint {
             normal: self.n,
-            ..TexturePoint::from(&self.surface)
+            ..TexturePoint::from(self.surface)
         }
     }
 }
@@ -366,7 +368,10 @@ impl<'a> Integrator<'a> {
         };
         let hit = self.scene.world.intersect(ray, reach, path.skip);
         let seen = match &hit {
-            Some(hit) => self.shade(&self.shading(ray, hit, &path), sampler, counts),
+            Some(hit) => {
+                let surface = self.scene.world.surface(ray, hit);
+                self.shade(&self.shading(ray, hit, &surface, &path), sampler, counts)
+            }
             None => self.sky(ray.direction),
         };
         let media = !self.scene.media.is_empty()
@@ -398,11 +403,16 @@ impl<'a> Integrator<'a> {
         fog_effect(&self.scene.fogs, &segment).apply(seen)
     }
 
-    fn shading<'p>(&self, ray: &Ray, hit: &Hit, path: &'p Path) -> Shading<'p>
+    fn shading<'p>(
+        &self,
+        ray: &Ray,
+        hit: &Hit,
+        surface: &'p SurfacePoint,
+        path: &'p Path,
+    ) -> Shading<'p>
     where
         'a: 'p,
     {
-        let surface = self.scene.world.surface(ray, hit);
         let d = ray.direction.normalize();
         // The ray meets the surface from behind, and whether it leaves the interior. As in
         // POV-Ray, a ray leaves an interior only if it is in it, whichever side it meets:
@@ -426,7 +436,7 @@ impl<'a> Integrator<'a> {
             surface.shading_normal
         };
         Shading {
-            n: perturbed_normal(&material.texture, &surface, facing),
+            n: perturbed_normal(&material.texture, surface, facing),
             facing,
             shadow_origin: offset_point(surface.point, surface.normal, -d),
             surface,

@@ -320,7 +320,8 @@ impl Integrator<'_> {
             }
             travel.length += step;
             let at = path;
-            let s = self.shading(&ray, &hit, &at);
+            let surface = self.scene.world.surface(&ray, &hit);
+            let s = self.shading(&ray, &hit, &surface, &at);
             if s.material.photons.pass_through {
                 path.interiors = super::crossing(&s).2;
                 ray = Ray::new(offset_point(s.surface.point, s.surface.normal, s.d), s.d);
