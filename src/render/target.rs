@@ -132,6 +132,7 @@ pub(super) fn render_to_error(
                 seed: first_seed,
                 first: FirstPoints::Listed(&taken),
             },
+            control: None,
         };
         let more = run(&plan, progress, Some(film));
         film = more.film;

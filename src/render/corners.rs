@@ -1,0 +1,266 @@
+//! The adaptive pilot on the pixels' corners, and the control variate it gives.
+//!
+//! From [`CORNERS_FROM_SPP`] samples per pixel on, in a scene whose samples vary only with
+//! their position in the pixel (no hidden noise, no lens, no mesh camera, no area light),
+//! the adaptive pilot traces one ray near every corner of the pixel grid instead of one
+//! through a random point of every pixel, and none of its values goes into a pixel's mean:
+//! - a straight edge that crosses a pixel puts its corners on both sides, so the range of
+//!   a pixel's four corners finds the pixels an edge crosses; the pilot's neighbours in a
+//!   3 x 3 block (point samples anywhere in their pixels) found a band two pixels wide on
+//!   the average, half of whose samples fell where no edge was. Where a texture changes
+//!   several times a pixel, four corners can agree by chance: there a pixel takes the
+//!   change of its neighbours ([`upper_median`]);
+//! - the corners' bilinear surface g is known over the whole pixel (its mean is the
+//!   corners' mean), so each sample f(x) becomes f(x) - g(x) + mean(g): the same
+//!   expectation whatever g is (x is uniform over the pixel and independent of the
+//!   corners), and where g follows the image (shading, colour ramps, an edge's two sides)
+//!   less variance.
+//!
+//! Tried first in a simulation (a 5120x3840 one-sample render of scenes/checker.pov and
+//! scenes/pattern_gradient.pov read as 320x240 pixels of 16 x 16 points, each pixel's
+//! samples stratified), RMSE at 3 / 4 / 6 / 8 samples per pixel, the neighbours' pilot
+//! against the corners': checker 0.0091 / 0.0073 / 0.0051 / 0.0042 against 0.0088 /
+//! 0.0057 / 0.0040 / 0.0030, pattern_gradient 0.0144 / 0.0115 / 0.0084 / 0.0068 against
+//! 0.0142 / 0.0100 / 0.0069 / 0.0053. Not kept from it: subdividing an edge pixel on
+//! further corners with one sample a cell (the corners' rays go into no mean: worse at
+//! equal rays on both scenes within a pixel's budget), and taking a smooth pixel's one
+//! sample only with probability q (its correction weighed 1/q; mixed, worse where the
+//! corners miss a detail). Measured in the renderer: [`CORNERS_FROM_SPP`].
+
+use glam::DVec3;
+
+use super::film::Film;
+use super::{AdaptivePixel, PENUMBRA_REACH, PilotSample, PixelWork};
+
+/// The least average (samples per pixel) at which an adaptive render takes its pilot at
+/// the corners (module docs): the corner pass's sample per pixel goes into no mean, so at
+/// a small budget it costs more than it saves. Measured at 640x480 against POV-Ray, RMSE of
+/// the corners against the pixels' pilot, at 3 / 4 / 6 / 8 spp: checker +9 / -9 / -15 /
+/// -13%, pattern_gradient +12 / -3 / -12 / -19%, shape_quadrics +6 / -7 / -10 / -13%,
+/// reflection +8 / -6 / -12 / -14%, csg_operations +15 / +1 / -5 / +1%, glass +19 / +7 /
+/// +5 / +6% (its far checks, many to a pixel, are most of its error: there every pixel
+/// needs samples, and the pixels' pilot keeps its own).
+pub(super) const CORNERS_FROM_SPP: f64 = 4.0;
+
+/// How far (in pixels, each way) a corner's ray may fall from the corner: exact corners
+/// alias with a texture whose period is near a pixel, where whole regions of corners agree
+/// (scenes/glass.pov's far checks: RMSE at 4 / 8 spp 0.0068 / 0.0053 with exact corners,
+/// 0.0055 / 0.0040 with a quarter pixel, 0.0057 / 0.0041 with a half), at some cost where
+/// edges are few and long (scenes/checker.pov 0.0023 / 0.0015 exact, 0.0025 / 0.0017 a
+/// quarter, 0.0032 / 0.0024 a half: the further the points stray, the wider the band of
+/// pixels an edge shows in).
+pub(super) const CORNER_JITTER: f64 = 0.25;
+
+/// The pilot's corners, for the control variate of each pixel's samples.
+pub(super) struct Control {
+    /// The corner grid's width: the image's plus one.
+    width: usize,
+    values: Vec<[f32; 3]>,
+    /// Per pixel, whether its samples take the control variate: not near a penumbra, where
+    /// a corner's few shadow rays make its value noisy and g with it.
+    applies: Vec<bool>,
+}
+
+impl Control {
+    /// A sample `l` of pixel (x, y) at `(u, v)` in the pixel (v down), less the corners'
+    /// bilinear surface there, plus the surface's mean over the pixel.
+    pub(super) fn apply(&self, (x, y): (usize, usize), (u, v): (f64, f64), l: DVec3) -> DVec3 {
+        if !self.applies[y * (self.width - 1) + x] {
+            return l;
+        }
+        let at = |dx: usize, dy: usize| {
+            DVec3::from_array(self.values[(y + dy) * self.width + x + dx].map(f64::from))
+        };
+        let (c00, c10, c01, c11) = (at(0, 0), at(1, 0), at(0, 1), at(1, 1));
+        let g = (c00 * (1.0 - u) + c10 * u) * (1.0 - v) + (c01 * (1.0 - u) + c11 * u) * v;
+        l - g + (c00 + c10 + c01 + c11) * 0.25
+    }
+}
+
+/// The pixels' decisions from the corner pass (`corners`, (w + 1) x (h + 1), and what each
+/// corner's ray met): the change is the range of a pixel's four corners, the cost their
+/// mean, and a pixel is near a penumbra where, within [`PENUMBRA_REACH`] of one of its
+/// corners, some corner's shadow ray towards an area light arrived and some other's was
+/// stopped. No pilot sample is a pixel's: each takes its samples from its point 0.
+pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<AdaptivePixel>, Control) {
+    let (cw, ch) = (corners.width, corners.height);
+    let values: Vec<[f32; 3]> = corners
+        .pixels
+        .iter()
+        .map(|p| p.mean().map(|v| v as f32))
+        .collect();
+    let around = |flag: fn(&PixelWork) -> bool| {
+        let own: Vec<u32> = work.iter().map(|p| u32::from(flag(p))).collect();
+        super::window_sums(&own, cw, PENUMBRA_REACH)
+    };
+    let penumbrae = work.iter().any(|p| p.lit) && work.iter().any(|p| p.shadowed);
+    let (lit, shadowed) = if penumbrae {
+        (around(|p| p.lit), around(|p| p.shadowed))
+    } else {
+        (Vec::new(), Vec::new())
+    };
+    let near_penumbra = |c: usize| penumbrae && lit[c] > 0 && shadowed[c] > 0;
+    let (w, h) = (cw - 1, ch - 1);
+    let corners_of = |i: usize| -> [usize; 4] {
+        let (x, y) = (i % w, i / w);
+        [
+            y * cw + x,
+            y * cw + x + 1,
+            (y + 1) * cw + x,
+            (y + 1) * cw + x + 1,
+        ]
+    };
+    let own: Vec<f64> = (0..w * h)
+        .map(|i| super::neighbour_change(&values, &corners_of(i)))
+        .collect();
+    let pixels = super::per_neighbourhood(w, h, |i, near| {
+        let c = corners_of(i);
+        AdaptivePixel {
+            change: change(&own, i, near),
+            cost: super::neighbour_cost(work, &c),
+            one_ray: !c.iter().any(|&k| near_penumbra(k)),
+            pilot: PilotSample::LeftOut,
+        }
+    });
+    let applies = (0..w * h)
+        .map(|i| {
+            let c = corners_of(i);
+            pixels[i].one_ray && c.iter().all(|&k| values[k].iter().all(|v| v.is_finite()))
+        })
+        .collect();
+    let control = Control {
+        width: cw,
+        values,
+        applies,
+    };
+    (pixels, control)
+}
+
+/// The upper median of a few values (the larger middle one of an even count; 0 of none):
+/// an edge crosses at most three of a pixel's eight neighbours, so this is 0 beside an edge
+/// and high only among many, where a texture has several changes to a pixel.
+fn upper_median(values: &[f64]) -> f64 {
+    let mut v = [0.0; 8];
+    let n = values.len().min(8);
+    v[..n].copy_from_slice(&values[..n]);
+    let v = &mut v[..n];
+    v.sort_unstable_by(f64::total_cmp);
+    v.get(n / 2).copied().unwrap_or(0.0)
+}
+
+/// A pixel's change: its corners' range `own[i]`, or where more than half its neighbours
+/// change over twice as much, their [`upper_median`]. The test first: in smooth shading
+/// every pixel's range is small and about its neighbours', and sorting every pixel's eight
+/// took 1.6% of a 6 spp render's instructions.
+fn change(own: &[f64], i: usize, near: &[usize]) -> f64 {
+    let above = near.iter().filter(|&&j| own[j] > 2.0 * own[i]).count();
+    if above < near.len().div_ceil(2) {
+        return own[i];
+    }
+    let mut values = [0.0; 8];
+    for (slot, &j) in values.iter_mut().zip(near) {
+        *slot = own[j];
+    }
+    upper_median(&values[..near.len()])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The control variate keeps each sample's expectation: over the pixel, the mean of
+    /// f - g + mean(g) is the mean of f, for any corners. A 64 x 64 grid of points (the
+    /// midpoints of its cells, where the bilinear surface's mean over them is exact) in a
+    /// pixel whose corners differ; and it removes a linear ramp whole.
+    #[test]
+    fn the_control_variate_keeps_the_mean_and_removes_a_ramp() {
+        let control = Control {
+            width: 3,
+            values: vec![
+                [0.0, 1.0, 0.5],
+                [0.2, 0.0, 0.5],
+                [9.0, 9.0, 9.0],
+                [0.7, 0.3, 0.5],
+                [0.9, 0.1, 0.0],
+                [9.0, 9.0, 9.0],
+            ],
+            applies: vec![true, false],
+        };
+        let f = |u: f64, v: f64| DVec3::new(u * u, (u * 7.0).sin() * v, 1.0 - v);
+        let n = 64;
+        let (mut plain, mut controlled) = (DVec3::ZERO, DVec3::ZERO);
+        for i in 0..n {
+            for j in 0..n {
+                let (u, v) = ((i as f64 + 0.5) / n as f64, (j as f64 + 0.5) / n as f64);
+                plain += f(u, v);
+                controlled += control.apply((0, 0), (u, v), f(u, v));
+            }
+        }
+        let diff = (plain - controlled).abs().max_element() / (n * n) as f64;
+        assert!(diff < 1e-12, "means differ by {diff}");
+        // The corners of pixel 0 on the ramp 0.2 u + 0.7 v: every sample becomes its mean.
+        let ramp = |u: f64, v: f64| DVec3::splat(0.2 * u + 0.7 * v);
+        let ramp_control = Control {
+            width: 2,
+            values: vec![[0.0; 3], [0.2; 3], [0.7; 3], [0.9; 3]],
+            applies: vec![true],
+        };
+        for (u, v) in [(0.1, 0.9), (0.5, 0.5), (0.99, 0.01)] {
+            let got = ramp_control.apply((0, 0), (u, v), ramp(u, v));
+            assert!(
+                (got - DVec3::splat(0.45)).abs().max_element() < 1e-6,
+                "{got}"
+            );
+        }
+        // Where it does not apply, the sample is left as it is.
+        assert_eq!(control.apply((1, 0), (0.3, 0.3), f(0.3, 0.3)), f(0.3, 0.3));
+    }
+
+    /// A vertical edge at x = 3.3 on an 8 x 4 image: only the pixels the edge crosses
+    /// (column 3) show a change; their neighbours, whose 3 x 3 blocks straddle it, do not.
+    /// A band of columns 4 to 7 holding a change every pixel (a texture finer than the
+    /// pixels, whose four corners can agree by chance) gives its pixels the change of their
+    /// neighbours where their own corners agree. A corner pass with a penumbra only at the
+    /// right marks the pixels within reach.
+    #[test]
+    fn the_corners_find_the_pixels_an_edge_crosses() {
+        let (cw, ch) = (9, 5);
+        let film = |value: &dyn Fn(usize, usize) -> f64| {
+            let mut corners = Film::new(cw, ch);
+            for y in 0..ch {
+                for x in 0..cw {
+                    let v = value(x, y);
+                    corners.pixels[y * cw + x].add([v, v, v]);
+                }
+            }
+            corners
+        };
+        let work = vec![PixelWork::default(); cw * ch];
+        let edge = film(&|x, _| if x >= 4 { 1.0 } else { 0.0 });
+        let (pixels, control) = corner_pixels(&edge, &work);
+        for (i, p) in pixels.iter().enumerate() {
+            let expect = if i % 8 == 3 { 1.0 } else { 0.0 };
+            assert_eq!(p.change, expect, "pixel {i}");
+            assert!(p.one_ray && !p.keeps_pilot());
+        }
+        assert!(control.applies.iter().all(|&a| a));
+        // Corner columns 5 to 8 alternate, but the four corners of pixel (6, 1) agree.
+        let texture = film(&|x, y| match (x, y) {
+            (6 | 7, 1 | 2) => 1.0,
+            (x, y) if x >= 5 => ((x + y) % 2) as f64,
+            _ => 0.0,
+        });
+        let (pixels, _) = corner_pixels(&texture, &work);
+        assert_eq!(pixels[8 + 6].change, 1.0, "agreeing corners among changes");
+        assert_eq!(pixels[8 + 2].change, 0.0);
+        let mut work = work;
+        work[8].lit = true;
+        work[cw + 8].shadowed = true;
+        let (pixels, control) = corner_pixels(&edge, &work);
+        for (i, p) in pixels.iter().enumerate() {
+            // Within 4 corners of corner column 8: pixels whose corners reach column 4.
+            assert_eq!(p.one_ray, i % 8 < 3, "pixel {i}");
+            assert_eq!(control.applies[i], p.one_ray);
+        }
+    }
+}
