@@ -30,7 +30,7 @@
 use glam::DVec3;
 
 use super::film::Film;
-use super::{AdaptivePixel, PENUMBRA_REACH, PilotSample, PixelWork};
+use super::{AdaptivePixel, PilotSample, PixelWork};
 
 /// The least average (samples per pixel) at which an adaptive render takes its pilot at
 /// the corners (module docs): the corner pass's sample per pixel goes into no mean, so at
@@ -55,19 +55,14 @@ pub(super) const CORNER_JITTER: f64 = 0.25;
 pub(super) struct Control {
     /// The corner grid's width: the image's plus one.
     width: usize,
+    /// The corners' values, row by row (finite: the film keeps none that is not).
     values: Vec<[f32; 3]>,
-    /// Per pixel, whether its samples take the control variate: not near a penumbra, where
-    /// a corner's few shadow rays make its value noisy and g with it.
-    applies: Vec<bool>,
 }
 
 impl Control {
     /// A sample `l` of pixel (x, y) at `(u, v)` in the pixel (v down), less the corners'
     /// bilinear surface there, plus the surface's mean over the pixel.
     pub(super) fn apply(&self, (x, y): (usize, usize), (u, v): (f64, f64), l: DVec3) -> DVec3 {
-        if !self.applies[y * (self.width - 1) + x] {
-            return l;
-        }
         let at = |dx: usize, dy: usize| {
             DVec3::from_array(self.values[(y + dy) * self.width + x + dx].map(f64::from))
         };
@@ -78,10 +73,10 @@ impl Control {
 }
 
 /// The pixels' decisions from the corner pass (`corners`, (w + 1) x (h + 1), and what each
-/// corner's ray met): the change is the range of a pixel's four corners, the cost their
-/// mean, and a pixel is near a penumbra where, within [`PENUMBRA_REACH`] of one of its
-/// corners, some corner's shadow ray towards an area light arrived and some other's was
-/// stopped. No pilot sample is a pixel's: each takes its samples from its point 0.
+/// corner's ray cost): the change is the range of a pixel's four corners ([`change`]), the
+/// cost their mean. A scene with area lights keeps the pixels' pilot, so no pixel is near
+/// a penumbra: each takes one shadow ray per light per sample, all its samples from its
+/// point 0 (no pilot sample is a pixel's).
 pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<AdaptivePixel>, Control) {
     let (cw, ch) = (corners.width, corners.height);
     let values: Vec<[f32; 3]> = corners
@@ -89,17 +84,6 @@ pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<Adaptive
         .iter()
         .map(|p| p.mean().map(|v| v as f32))
         .collect();
-    let around = |flag: fn(&PixelWork) -> bool| {
-        let own: Vec<u32> = work.iter().map(|p| u32::from(flag(p))).collect();
-        super::window_sums(&own, cw, PENUMBRA_REACH)
-    };
-    let penumbrae = work.iter().any(|p| p.lit) && work.iter().any(|p| p.shadowed);
-    let (lit, shadowed) = if penumbrae {
-        (around(|p| p.lit), around(|p| p.shadowed))
-    } else {
-        (Vec::new(), Vec::new())
-    };
-    let near_penumbra = |c: usize| penumbrae && lit[c] > 0 && shadowed[c] > 0;
     let (w, h) = (cw - 1, ch - 1);
     let corners_of = |i: usize| -> [usize; 4] {
         let (x, y) = (i % w, i / w);
@@ -118,21 +102,11 @@ pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<Adaptive
         AdaptivePixel {
             change: change(&own, i, near),
             cost: super::neighbour_cost(work, &c),
-            one_ray: !c.iter().any(|&k| near_penumbra(k)),
+            one_ray: true,
             pilot: PilotSample::LeftOut,
         }
     });
-    let applies = (0..w * h)
-        .map(|i| {
-            let c = corners_of(i);
-            pixels[i].one_ray && c.iter().all(|&k| values[k].iter().all(|v| v.is_finite()))
-        })
-        .collect();
-    let control = Control {
-        width: cw,
-        values,
-        applies,
-    };
+    let control = Control { width: cw, values };
     (pixels, control)
 }
 
@@ -184,7 +158,6 @@ mod tests {
                 [0.9, 0.1, 0.0],
                 [9.0, 9.0, 9.0],
             ],
-            applies: vec![true, false],
         };
         let f = |u: f64, v: f64| DVec3::new(u * u, (u * 7.0).sin() * v, 1.0 - v);
         let n = 64;
@@ -203,7 +176,6 @@ mod tests {
         let ramp_control = Control {
             width: 2,
             values: vec![[0.0; 3], [0.2; 3], [0.7; 3], [0.9; 3]],
-            applies: vec![true],
         };
         for (u, v) in [(0.1, 0.9), (0.5, 0.5), (0.99, 0.01)] {
             let got = ramp_control.apply((0, 0), (u, v), ramp(u, v));
@@ -212,16 +184,13 @@ mod tests {
                 "{got}"
             );
         }
-        // Where it does not apply, the sample is left as it is.
-        assert_eq!(control.apply((1, 0), (0.3, 0.3), f(0.3, 0.3)), f(0.3, 0.3));
     }
 
     /// A vertical edge at x = 3.3 on an 8 x 4 image: only the pixels the edge crosses
     /// (column 3) show a change; their neighbours, whose 3 x 3 blocks straddle it, do not.
     /// A band of columns 4 to 7 holding a change every pixel (a texture finer than the
     /// pixels, whose four corners can agree by chance) gives its pixels the change of their
-    /// neighbours where their own corners agree. A corner pass with a penumbra only at the
-    /// right marks the pixels within reach.
+    /// neighbours where their own corners agree.
     #[test]
     fn the_corners_find_the_pixels_an_edge_crosses() {
         let (cw, ch) = (9, 5);
@@ -237,13 +206,12 @@ mod tests {
         };
         let work = vec![PixelWork::default(); cw * ch];
         let edge = film(&|x, _| if x >= 4 { 1.0 } else { 0.0 });
-        let (pixels, control) = corner_pixels(&edge, &work);
+        let (pixels, _) = corner_pixels(&edge, &work);
         for (i, p) in pixels.iter().enumerate() {
             let expect = if i % 8 == 3 { 1.0 } else { 0.0 };
             assert_eq!(p.change, expect, "pixel {i}");
             assert!(p.one_ray && !p.keeps_pilot());
         }
-        assert!(control.applies.iter().all(|&a| a));
         // Corner columns 5 to 8 alternate, but the four corners of pixel (6, 1) agree.
         let texture = film(&|x, y| match (x, y) {
             (6 | 7, 1 | 2) => 1.0,
@@ -253,14 +221,5 @@ mod tests {
         let (pixels, _) = corner_pixels(&texture, &work);
         assert_eq!(pixels[8 + 6].change, 1.0, "agreeing corners among changes");
         assert_eq!(pixels[8 + 2].change, 0.0);
-        let mut work = work;
-        work[8].lit = true;
-        work[cw + 8].shadowed = true;
-        let (pixels, control) = corner_pixels(&edge, &work);
-        for (i, p) in pixels.iter().enumerate() {
-            // Within 4 corners of corner column 8: pixels whose corners reach column 4.
-            assert_eq!(p.one_ray, i % 8 < 3, "pixel {i}");
-            assert_eq!(control.applies[i], p.one_ray);
-        }
     }
 }

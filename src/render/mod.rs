@@ -707,7 +707,6 @@ fn pilot_pass(options: &RenderOptions, run: &Pass, exact: bool) -> Pilot {
 fn corner_pilot(options: &RenderOptions, run: &Pass) -> Pilot {
     let plan = SamplePlan::Lattice {
         seed: options.seed ^ CORNER_SEED,
-        light_rays: pilot_light_rays(options.samples_per_pixel),
     };
     let PassOutput { film, rays, work } = run(&plan, &(), None);
     let (pixels, control) = corners::corner_pixels(&film, &work);
@@ -792,10 +791,10 @@ enum SamplePlan<'a> {
         position_seed: u64,
         fixed_light: Option<u32>,
     },
-    /// The adaptive pilot at the pixels' corners ([`corners`]): one sample through each
-    /// point of the (w + 1) x (h + 1) grid of the pixels' corners, with `light_rays` shadow
-    /// rays per area light.
-    Lattice { seed: u64, light_rays: u32 },
+    /// The adaptive pilot at the pixels' corners ([`corners`]): one sample near each
+    /// point of the (w + 1) x (h + 1) grid of the pixels' corners (in scenes without area
+    /// lights: [`AdaptiveScene`]).
+    Lattice { seed: u64 },
     /// Adaptive sampling: pixel i has counts[i] samples (all of its own strata; none
     /// where the count is 0) and takes those of its `share` from `resume_at[i]` on (a
     /// checkpoint holds those before; empty: none), with one shadow ray per light per
@@ -932,11 +931,11 @@ impl SamplePlan<'_> {
                     },
                 }
             }
-            &SamplePlan::Lattice { seed, .. } => PixelPlan {
+            &SamplePlan::Lattice { seed } => PixelPlan {
                 spp: 1,
                 range: 0..1,
                 seed,
-                fixed_light: true,
+                fixed_light: false,
                 position: PositionPlan { seed, first: 0 },
             },
             SamplePlan::PerPixel {
@@ -1621,8 +1620,7 @@ fn pass_integrators<'s>(
         SamplePlan::Uniform {
             fixed_light: Some(k),
             ..
-        }
-        | SamplePlan::Lattice { light_rays: k, .. } => *k,
+        } => *k,
         _ => 1,
     };
     let fixed_options = RenderOptions {
