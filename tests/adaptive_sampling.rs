@@ -175,15 +175,7 @@ fn an_edge_along_the_frame_is_found_without_bias() {
     let top_row = |corner_pilot: bool| -> (f64, f64) {
         let top: Vec<f64> = (0..4)
             .flat_map(|k| {
-                let o = RenderOptions {
-                    width: 640,
-                    height: 16,
-                    samples_per_pixel: 4,
-                    seed: 130 + k,
-                    adaptive: true,
-                    corner_pilot,
-                    ..RenderOptions::default()
-                };
+                let o = adaptive_options((640, 16), 4, 130 + k, corner_pilot);
                 let image = penumbra::render_scene(&scene, &o, &()).expect("renders").0;
                 (0..640)
                     .map(|x| f64::from(image.get(x, 0)[0]))
@@ -217,15 +209,7 @@ fn the_corner_pilot_is_unbiased_and_lowers_the_noise() {
     let verdict = |corner_pilot: bool| {
         let images: Vec<Image> = (0..8)
             .map(|k| {
-                let o = RenderOptions {
-                    width: 160,
-                    height: 120,
-                    samples_per_pixel: 8,
-                    seed: 150 + k,
-                    adaptive: true,
-                    corner_pilot,
-                    ..RenderOptions::default()
-                };
+                let o = adaptive_options((160, 120), 8, 150 + k, corner_pilot);
                 penumbra::render_scene(&scene, &o, &()).expect("renders").0
             })
             .collect();
@@ -239,6 +223,24 @@ fn the_corner_pilot_is_unbiased_and_lowers_the_noise() {
         corners.sqrt_v < 0.92 * pixels.sqrt_v,
         "{corners} against {pixels}"
     );
+}
+
+/// An adaptive render's options, its pilot at the corners where it may or not.
+fn adaptive_options(
+    (width, height): (usize, usize),
+    spp: u32,
+    seed: u64,
+    corner_pilot: bool,
+) -> RenderOptions {
+    RenderOptions {
+        width,
+        height,
+        samples_per_pixel: spp,
+        seed,
+        adaptive: true,
+        corner_pilot,
+        ..RenderOptions::default()
+    }
 }
 
 /// A scene of scenes/ at 160x120 and its committed POV-Ray reference.
