@@ -110,16 +110,13 @@ pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<Adaptive
     (pixels, control)
 }
 
-/// The upper median of a few values (the larger middle one of an even count; 0 of none):
-/// an edge crosses at most three of a pixel's eight neighbours, so this is 0 beside an edge
-/// and high only among many, where a texture has several changes to a pixel.
-fn upper_median(values: &[f64]) -> f64 {
-    let mut v = [0.0; 8];
-    let n = values.len().min(8);
-    v[..n].copy_from_slice(&values[..n]);
-    let v = &mut v[..n];
-    v.sort_unstable_by(f64::total_cmp);
-    v.get(n / 2).copied().unwrap_or(0.0)
+/// The upper median of a few values (the larger middle one of an even count; 0 of none),
+/// sorting them in place: an edge crosses at most three of a pixel's eight neighbours, so
+/// this is 0 beside an edge and high only among many, where a texture has several changes
+/// to a pixel.
+fn upper_median(values: &mut [f64]) -> f64 {
+    values.sort_unstable_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(0.0)
 }
 
 /// A pixel's change: its corners' range `own[i]`, or where more than half its neighbours
@@ -135,7 +132,7 @@ fn change(own: &[f64], i: usize, near: &[usize]) -> f64 {
     for (slot, &j) in values.iter_mut().zip(near) {
         *slot = own[j];
     }
-    upper_median(&values[..near.len()])
+    upper_median(&mut values[..near.len()])
 }
 
 #[cfg(test)]

@@ -510,6 +510,8 @@ fn adaptive_passes(
     let before = checkpoint.map_or(0, Film::samples);
     let mut film = match checkpoint {
         Some(done) => done.clone(),
+        // The corner pilot's film is empty already ([`emptied`]).
+        None if at_corners => pilot,
         None => {
             progress.pass(&pilot);
             keep_only(&mut pilot, holds_pilot);
@@ -1116,8 +1118,9 @@ enum PilotSample {
     /// the render's, but on the frame).
     #[default]
     Stays,
-    /// Left out (near a penumbra, where the pilot shades apart from the render): the
-    /// pixel's samples take its sequence from point 0.
+    /// Left out (near a penumbra, where the pilot shades apart from the render), or none
+    /// (a pilot at the pixels' corners: [`corners`]): the pixel's samples take its
+    /// sequence from point 0.
     LeftOut,
     /// Left out because its value went into the pixel's own decisions (on the image's
     /// frame: [`change_with_own`]). The pixel's samples then take a sequence of their own:
