@@ -4,8 +4,9 @@
 # against a POV-Ray reference at k = 8 (cached under target/bench640: they take minutes to
 # hours each). Writes docs/convergence/640/NAME/ and prints each scene's summary.
 # Usage: docs/convergence/bench640.sh [SCENE.pov...]   (default: the scenes listed below)
-# Environment: SPP (default 1,2,3,4,6,8,16,32, and with --adaptive the averages 1.125, 1.25
-# and 1.5 too, where one whole step doubles the time), SEEDS (default 2), THREADS (default 1: penumbra
+# Environment: SPP (default 1,2,3,4,6,8,16,32, and with --adaptive the averages 1.0625,
+# 1.125, 1.25, 1.5 and 1.75 too, where one whole step doubles the time and POV-Ray's -A,
+# +AM2 +R3 and +R4 errors fall), SEEDS (default 2), THREADS (default 1: penumbra
 # and POV-Ray alike, so a loaded 2-core machine disturbs both the same way), OPTIONS (extra
 # penumbra render options, e.g. "--adaptive"), OUT (default docs/convergence/640), BIN (a
 # built penumbra, instead of building one). Run it once as it is and once with
@@ -14,7 +15,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 if [[ "${OPTIONS:-}" == *--adaptive* ]]; then
-  SPP=${SPP:-1,1.125,1.25,1.5,2,3,4,6,8,16,32}
+  SPP=${SPP:-1,1.0625,1.125,1.25,1.5,1.75,2,3,4,6,8,16,32}
 else
   SPP=${SPP:-1,2,3,4,6,8,16,32}
 fi
