@@ -1142,13 +1142,13 @@ const JUDGED_POSITIONS: u64 = 0x6a75_6467_6564_0001;
 /// change around it stands for it) over the root of its cost c per sample, which minimises
 /// their summed variance sum s_i^2 / n_i for the time sum n_i c_i. A pilot sample that
 /// stays counts in n_i: a pixel whose share is below it takes no more ([`water_level`]).
-/// Before, the samples after the pilot went as s_i / sqrt(c_i), spread over more pixels;
-/// counting the pilot, RMSE at 640x480 against POV-Ray (2 seeds) at 1.125 / 1.5 / 2 / 3
+/// (Before, the samples after the pilot went as s_i / sqrt(c_i), spread over more pixels.
+/// Counting the pilot, RMSE at 640x480 against POV-Ray, 2 seeds, at 1.125 / 1.5 / 2 / 3
 /// spp: shape_quadrics -18 / -9 / -7 / -6%, pattern_gradient -15 / -15 / -10 / -8%,
 /// reflection -12 / -6 / -3 / 0%, soft_shadow +5 / -4 / -8 / -6%, area_circular_9x9
 /// +5 / -5 / -7 / -5%, checker +2 / -1 / -1 / 0%, but focal_blur -8 / +6 / +5 / +3% and
-/// csg_operations -8 / +7 / +2 / 0%. (Measured at 640x480, 16 spp: with no quarter, focal_blur's
-/// RMSE was 0.0180, with it 0.0119; checker's 0.00198 and 0.00186.) Pixels near a
+/// csg_operations -8 / +7 / +2 / 0%.) (Measured at 640x480, 16 spp: with no quarter,
+/// focal_blur's RMSE was 0.0180, with it 0.0119; checker's 0.00198 and 0.00186.) Pixels near a
 /// penumbra share too: there the error is on the hard edges each grid point's shadow draws
 /// (area_grid_6x2 at 16 spp: 3.3% of the pixels hold 99% of the squared error), and
 /// giving every such pixel `spp` spent most of their time on the smooth parts between
@@ -1173,7 +1173,11 @@ fn allocate(pixels: &[AdaptivePixel], average: f64, floor_share: u32) -> Vec<u32
     let spent: f64 = pixels.iter().map(|p| p.change * p.cost.sqrt()).sum();
     let held = |p: &AdaptivePixel| f64::from(u8::from(p.keeps_pilot()));
     let more = |t: f64, p: &AdaptivePixel| (t * p.change / p.cost.sqrt() - held(p)).max(0.0);
-    let scale = water_level(pixels, time, spent);
+    let scale = if spent > 0.0 {
+        water_level(pixels, time, spent)
+    } else {
+        0.0
+    };
     pixels
         .par_iter()
         .map(|p| {
