@@ -39,7 +39,10 @@ use super::{AdaptivePixel, PilotSample, PixelWork};
 /// -13%, pattern_gradient +12 / -3 / -12 / -19%, shape_quadrics +6 / -7 / -10 / -13%,
 /// reflection +8 / -6 / -12 / -14%, csg_operations +15 / +1 / -5 / +1%, glass +19 / +7 /
 /// +5 / +6% (its far checks, many to a pixel, are most of its error: there every pixel
-/// needs samples, and the pixels' pilot keeps its own).
+/// needs samples, and the pixels' pilot keeps its own). Measured again with the bend and
+/// the pixels' pilot counted in its pixel's share (twenty-third session), at 3 / 4 / 6 spp:
+/// checker +6 / -10 / -15%, pattern_gradient +11 / -7 / -18%, shape_quadrics +2 / -12 /
+/// -18%, reflection -1 / -14 / -20%, csg_operations +13 / 0 / -6%, glass +18 / +5 / 0%.
 pub(super) const CORNERS_FROM_SPP: f64 = 4.0;
 
 /// How far (in pixels, each way) a corner's ray may fall from the corner: exact corners
