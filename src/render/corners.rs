@@ -2,8 +2,15 @@
 //!
 //! From [`CORNERS_FROM_SPP`] samples per pixel on, in a scene whose samples vary only with
 //! their position in the pixel (no hidden noise, no lens, no mesh camera, no area light),
-//! the adaptive pilot traces one ray near every corner of the pixel grid instead of one
-//! through a random point of every pixel, and none of its values goes into a pixel's mean:
+//! the adaptive pilot traces one ray near corners of the pixel grid instead of one through
+//! a random point of every pixel, and none of its values goes into a pixel's mean. It
+//! traces every other corner across and down first, then the rest only where those change
+//! ([`refinement`]); a corner left out takes its traced neighbours' mean. Against every
+//! corner traced (a sample per pixel), at 640x480, 2 seeds, RMSE at 4 / 6 / 8 / 16 spp:
+//! checker -9 / -1 / +1 / -3%, pattern_gradient -4 / 0 / 0 / 0%, shape_quadrics -11 / -2
+//! / 0 / 0%, reflection -12 / -5 / -3 / 0%, csg_operations -4 / -1 / -1 / -9%, glass 0 / +2
+//! / +3 / -9%; the coarse corners alone (a quarter of a sample per pixel) lost on four of
+//! the six scenes (checker at 8 spp +56%, glass +55%). From there on:
 //! - a straight edge that crosses a pixel puts its corners on both sides, so the range of
 //!   a pixel's four corners finds the pixels an edge crosses; the pilot's neighbours in a
 //!   3 x 3 block (point samples anywhere in their pixels) found a band two pixels wide on
@@ -43,7 +50,11 @@ use super::{AdaptivePixel, PilotSample, PixelWork};
 /// the pixels' pilot counted in its pixel's share (twenty-third session), at 3 / 4 / 6 spp:
 /// checker +6 / -10 / -15%, pattern_gradient +11 / -7 / -18%, shape_quadrics +2 / -12 /
 /// -18%, reflection -1 / -14 / -20%, csg_operations +13 / 0 / -6%, glass +18 / +5 / 0%.
-pub(super) const CORNERS_FROM_SPP: f64 = 4.0;
+/// With the corners traced only where a coarse pass finds change ([`refinement`]: 0.37 to
+/// 0.97 samples per pixel on these scenes instead of 1), at 2 / 2.5 / 3 spp: checker -4 /
+/// -14 / -14%, pattern_gradient +20 / +4 / -3%, shape_quadrics -14 / -20 / -22%, reflection
+/// -16 / -23 / -24%, csg_operations +19 / +7 / 0%, glass +23 / +12 / +6%.
+pub(super) const CORNERS_FROM_SPP: f64 = 3.0;
 
 /// How far (in pixels, each way) a corner's ray may fall from the corner: exact corners
 /// alias with a texture whose period is near a pixel, where whole regions of corners agree
@@ -88,13 +99,16 @@ impl Control {
 /// with area lights keeps the pixels' pilot, so no pixel is near a penumbra: each takes
 /// one shadow ray per light per sample, all its samples from its point 0 (no pilot sample
 /// is a pixel's).
-pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<AdaptivePixel>, Control) {
+/// Corners the pilot did not trace ([`refinement`]) take the mean of the two traced
+/// corners beside them, or of the four around them, and their cost.
+pub(super) fn corner_pixels(
+    corners: &Film,
+    work: &mut [PixelWork],
+) -> (Vec<AdaptivePixel>, Control) {
     let (cw, ch) = (corners.width, corners.height);
-    let values: Vec<[f32; 3]> = corners
-        .pixels
-        .iter()
-        .map(|p| p.mean().map(|v| v as f32))
-        .collect();
+    let mut values = means(corners);
+    fill_untraced(corners, &mut values, work);
+    let work = &*work;
     let (w, h) = (cw - 1, ch - 1);
     let corners_of = |i: usize| -> [usize; 4] {
         let (x, y) = (i % w, i / w);
@@ -105,7 +119,7 @@ pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<Adaptive
             (y + 1) * cw + x + 1,
         ]
     };
-    let bend = bends(&values, cw, ch);
+    let bend = bends(&values, &whole_line(cw), &whole_line(ch));
     let own: Vec<f64> = (0..w * h)
         .map(|i| {
             let c = corners_of(i);
@@ -126,14 +140,138 @@ pub(super) fn corner_pixels(corners: &Film, work: &[PixelWork]) -> (Vec<Adaptive
     (pixels, control)
 }
 
+fn means(corners: &Film) -> Vec<[f32; 3]> {
+    corners
+        .pixels
+        .iter()
+        .map(|p| p.mean().map(|v| v as f32))
+        .collect()
+}
+
+/// Whether each corner of a cw x ch grid is in the pilot's first pass: every other one
+/// across and down, and the last column and row, so that every corner left out lies
+/// midway between two traced ones, or amid four.
+pub(super) fn coarse(cw: usize, ch: usize) -> Vec<bool> {
+    let on = |i: usize, n: usize| i.is_multiple_of(2) || i + 1 == n;
+    (0..cw * ch)
+        .map(|k| on(k % cw, cw) && on(k / cw, ch))
+        .collect()
+}
+
+/// Every position along an axis n corners long.
+fn whole_line(n: usize) -> Vec<usize> {
+    (0..n).collect()
+}
+
+/// The positions of the [`coarse`] corners along an axis n corners long.
+fn coarse_line(n: usize) -> Vec<usize> {
+    (0..n)
+        .filter(|&i| i.is_multiple_of(2) || i + 1 == n)
+        .collect()
+}
+
+/// The change above which a block of 2 x 2 pixels takes the rest of its corners, at an
+/// average of `average` samples per pixel: [`REFINE`] / average^2.
+pub(super) fn refine_threshold(average: f64) -> f64 {
+    REFINE / (average * average)
+}
+
+/// A block's change (its coarse corners' range, or their bend on the coarse grid where
+/// that is less) times the average squared above which the block's other corners are
+/// traced. The more samples a pixel takes, the less of its error a corner's guess may be:
+/// measured at 640x480, 2 seeds, RMSE at 3 / 4 / 8 spp with a threshold of k / spp against
+/// k / spp^2 (and against every corner traced, the pixels' pilot at 3 spp): k / spp with
+/// k = 0.006 / 0.012 / 0.024 left glass at 8 spp 0.00402 / 0.00426 / 0.00427 (every corner:
+/// 0.00407) and pattern_gradient at 3 spp 0.00721 / 0.00692 / 0.00636 (0.00656); 0.072 /
+/// spp^2 gives 0.00419 and 0.00636, and checker 0.00293 / 0.00228 / 0.00168 (0.00340 /
+/// 0.00250 / 0.00167).
+const REFINE: f64 = 0.072;
+
+/// The corners the pilot's second pass traces: those not yet traced of every block of 2 x 2
+/// pixels whose change exceeds `threshold` ([`REFINE`]), or whose neighbours mostly change
+/// twice as much as it does (the [`change`] rule; a texture finer than a block can leave
+/// its four corners alike). A straight edge through a block parts its corners, so only
+/// detail within the block goes unseen; its guessed corners stand in the control variate,
+/// which keeps each sample's expectation whatever they are.
+pub(super) fn refinement(first: &Film, threshold: f64) -> Vec<bool> {
+    let (cw, ch) = (first.width, first.height);
+    let values = means(first);
+    let (xs, ys) = (coarse_line(cw), coarse_line(ch));
+    let (bw, bh) = (xs.len() - 1, ys.len() - 1);
+    let at = |bx: usize, by: usize| ys[by] * cw + xs[bx];
+    let sub: Vec<[f32; 3]> = (0..xs.len() * ys.len())
+        .map(|k| values[at(k % xs.len(), k / xs.len())])
+        .collect();
+    let bend = bends(&sub, &xs, &ys);
+    let own: Vec<f64> = (0..bw * bh)
+        .map(|b| {
+            let (bx, by) = (b % bw, b / bw);
+            let blocks = [(bx, by), (bx + 1, by), (bx, by + 1), (bx + 1, by + 1)];
+            let most = blocks
+                .iter()
+                .map(|&(x, y)| bend[y * xs.len() + x])
+                .fold(0.0, f64::max);
+            super::neighbour_change(&values, &blocks.map(|(x, y)| at(x, y))).min(most)
+        })
+        .collect();
+    let mut rest = vec![false; cw * ch];
+    for b in 0..bw * bh {
+        let (bx, by) = (b % bw, b / bw);
+        let (near, n) = super::neighbours(bw, bh, bx, by);
+        if change(&own, b, &near[..n]) <= threshold {
+            continue;
+        }
+        for y in ys[by]..=ys[by + 1] {
+            for x in xs[bx]..=xs[bx + 1] {
+                rest[y * cw + x] = first.pixels[y * cw + x].count == 0;
+            }
+        }
+    }
+    rest
+}
+
+/// Gives each corner no pass traced the mean of the traced corners beside it (along its
+/// row first, then down its column: a corner amid four takes their mean) and the cost of
+/// one of them.
+fn fill_untraced(corners: &Film, values: &mut [[f32; 3]], work: &mut [PixelWork]) {
+    let (cw, ch) = (corners.width, corners.height);
+    let mean = |a: [f32; 3], b: [f32; 3]| std::array::from_fn(|c| 0.5 * (a[c] + b[c]));
+    let untraced = |k: usize| corners.pixels[k].count == 0;
+    for y in coarse_line(ch) {
+        for k in (1..cw - 1)
+            .step_by(2)
+            .map(|x| y * cw + x)
+            .filter(|&k| untraced(k))
+        {
+            values[k] = mean(values[k - 1], values[k + 1]);
+            work[k].rays = work[k - 1].rays;
+        }
+    }
+    for y in (1..ch - 1).step_by(2) {
+        for k in (y * cw..(y + 1) * cw).filter(|&k| untraced(k)) {
+            values[k] = mean(values[k - cw], values[k + cw]);
+            work[k].rays = work[k - cw].rays;
+        }
+    }
+}
+
 /// How far each corner's value bends from the straight line through its neighbours across
-/// and down the grid (the larger second difference, averaged over the channels). On the
-/// grid's border, the bend at the next corner in; a grid under three corners wide or high
-/// bends without limit that way.
-fn bends(values: &[[f32; 3]], cw: usize, ch: usize) -> Vec<f64> {
-    let second = |a: usize, k: usize, b: usize| -> f64 {
+/// and down the grid (the larger second difference, averaged over the channels), the
+/// corners at positions `xs` across and `ys` down (a coarse grid's last step may be half
+/// the others: the line is drawn through the true positions, so a ramp bends nowhere). On
+/// the grid's border, the bend at the next corner in; a grid under three corners wide or
+/// high bends without limit that way.
+fn bends(values: &[[f32; 3]], xs: &[usize], ys: &[usize]) -> Vec<f64> {
+    let (cw, ch) = (xs.len(), ys.len());
+    // The outer two points' weights, twice the line's at the middle one (1 and 1 on even
+    // steps, so that the difference is the plain second difference there).
+    let weights = |p: &[usize], m: usize| -> [f32; 2] {
+        let (h1, h2) = ((p[m] - p[m - 1]) as f32, (p[m + 1] - p[m]) as f32);
+        [2.0 * h2 / (h1 + h2), 2.0 * h1 / (h1 + h2)]
+    };
+    let second = |a: usize, k: usize, b: usize, [wa, wb]: [f32; 2]| -> f64 {
         (0..3)
-            .map(|c| f64::from((values[a][c] - 2.0 * values[k][c] + values[b][c]).abs()))
+            .map(|c| f64::from((values[a][c] * wa - 2.0 * values[k][c] + values[b][c] * wb).abs()))
             .sum::<f64>()
             / 3.0
     };
@@ -144,11 +282,11 @@ fn bends(values: &[[f32; 3]], cw: usize, ch: usize) -> Vec<f64> {
             let (x, y) = (k % cw, k / cw);
             let across = middle(x, cw).map_or(f64::INFINITY, |m| {
                 let i = y * cw + m;
-                second(i - 1, i, i + 1)
+                second(i - 1, i, i + 1, weights(xs, m))
             });
             let down = middle(y, ch).map_or(f64::INFINITY, |m| {
                 let i = m * cw + x;
-                second(i - cw, i, i + cw)
+                second(i - cw, i, i + cw, weights(ys, m))
             });
             across.max(down)
         })
@@ -182,6 +320,7 @@ fn change(own: &[f64], i: usize, near: &[usize]) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::film::PixelSum;
     use super::*;
 
     /// The control variate keeps each sample's expectation: over the pixel, the mean of
@@ -237,9 +376,9 @@ mod tests {
     fn the_corners_find_the_pixels_an_edge_crosses() {
         let (cw, ch) = (9, 5);
         let film = |value: &dyn Fn(usize, usize) -> f64| corner_film(cw, ch, value);
-        let work = vec![PixelWork::default(); cw * ch];
+        let mut work = vec![PixelWork::default(); cw * ch];
         let edge = film(&|x, _| if x >= 4 { 1.0 } else { 0.0 });
-        let (pixels, _) = corner_pixels(&edge, &work);
+        let (pixels, _) = corner_pixels(&edge, &mut work);
         for (i, p) in pixels.iter().enumerate() {
             let expect = if i % 8 == 3 { 1.0 } else { 0.0 };
             assert_eq!(p.change, expect, "pixel {i}");
@@ -251,7 +390,7 @@ mod tests {
             (x, y) if x >= 5 => ((x + y) % 2) as f64,
             _ => 0.0,
         });
-        let (pixels, _) = corner_pixels(&texture, &work);
+        let (pixels, _) = corner_pixels(&texture, &mut work);
         assert_eq!(pixels[8 + 6].change, 1.0, "agreeing corners among changes");
         assert_eq!(pixels[8 + 2].change, 0.0);
     }
@@ -268,22 +407,78 @@ mod tests {
         corners
     }
 
+    /// [`corner_film`] with only the [`coarse`] corners traced.
+    fn coarse_film(cw: usize, ch: usize, value: &dyn Fn(usize, usize) -> f64) -> Film {
+        let mut film = corner_film(cw, ch, value);
+        for (p, traced) in film.pixels.iter_mut().zip(coarse(cw, ch)) {
+            if !traced {
+                *p = PixelSum::default();
+            }
+        }
+        film
+    }
+
+    /// On a ramp the coarse corners ask for no more (at a threshold of 1e-6, what 270 spp
+    /// would take), and the corners left out take the ramp's values, across both an even and an odd number of pixels (the last
+    /// column and row are traced whatever their parity), so the pixels show no change.
+    #[test]
+    fn a_coarse_ramp_is_filled_exactly() {
+        for (cw, ch) in [(9, 6), (8, 7)] {
+            let value = |x: usize, y: usize| 0.25 * x as f64 + 0.125 * y as f64;
+            let film = coarse_film(cw, ch, &value);
+            let traced = film.pixels.iter().filter(|p| p.count > 0).count();
+            assert_eq!(traced, coarse(cw, ch).iter().filter(|&&t| t).count());
+            assert!(traced < cw * ch / 2, "{traced} of {}", cw * ch);
+            // Above the single-precision roundings of a third's weights (2/3, 4/3).
+            let rest = refinement(&film, 1e-6);
+            assert!(
+                rest.iter().all(|&r| !r),
+                "a ramp refines none ({cw} x {ch})"
+            );
+            let mut work = vec![PixelWork::default(); cw * ch];
+            let (pixels, control) = corner_pixels(&film, &mut work);
+            for (k, v) in control.values.iter().enumerate() {
+                let expect = value(k % cw, k / cw) as f32;
+                assert!((v[0] - expect).abs() < 1e-6, "corner {k}: {v:?}, {expect}");
+            }
+            assert!(pixels.iter().all(|p| p.change == 0.0));
+        }
+    }
+
+    /// A step between corner columns 4 and 6 (x = 5 and up are 1): the blocks of 2 x 2
+    /// pixels it crosses take their other corners, column 5 and the odd rows of columns 4
+    /// and 6, and no other block does, at any threshold below the step's change of 1.
+    #[test]
+    fn a_step_refines_the_blocks_it_crosses() {
+        let (cw, ch) = (11, 7);
+        let film = coarse_film(cw, ch, &|x, _| if x >= 5 { 1.0 } else { 0.0 });
+        for threshold in [0.0, 0.5, 0.99] {
+            let rest = refinement(&film, threshold);
+            for (k, &r) in rest.iter().enumerate() {
+                let (x, y) = (k % cw, k / cw);
+                let expect = x == 5 || (x == 4 || x == 6) && y % 2 == 1;
+                assert_eq!(r, expect, "corner ({x}, {y}) at {threshold}");
+            }
+        }
+        assert!(refinement(&film, 1.0).iter().all(|&r| !r));
+    }
+
     /// Shading that changes linearly across the pixels (their corners on a ramp) asks for
     /// no samples beyond the floor, where the control variate takes it whole, on the
     /// image's border too; on a curve the change is the bend, less than the range.
     #[test]
     fn a_ramp_of_corners_asks_for_no_samples() {
         let (cw, ch) = (9, 6);
-        let work = vec![PixelWork::default(); cw * ch];
+        let mut work = vec![PixelWork::default(); cw * ch];
         let w = cw - 1;
         let ramp = corner_film(cw, ch, &|x, y| 0.25 * x as f64 + 0.125 * y as f64);
-        let (pixels, _) = corner_pixels(&ramp, &work);
+        let (pixels, _) = corner_pixels(&ramp, &mut work);
         assert_eq!(pixels.len(), w * (ch - 1));
         for (i, p) in pixels.iter().enumerate() {
             assert_eq!(p.change, 0.0, "pixel {i}");
         }
         let curve = corner_film(cw, ch, &|x, _| 0.01 * (x * x) as f64);
-        let (pixels, _) = corner_pixels(&curve, &work);
+        let (pixels, _) = corner_pixels(&curve, &mut work);
         // Pixel (3, 2): corners at x = 3 and 4, range 0.07, bend 0.02.
         assert!((pixels[2 * w + 3].change - 0.02).abs() < 1e-6);
     }

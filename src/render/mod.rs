@@ -483,8 +483,9 @@ fn adaptive_passes(
         mut rays,
         pixels,
         control,
+        spent,
     } = if at_corners {
-        corner_pilot(options, run)
+        corner_pilot(options, run, average)
     } else {
         pilot_pass(options, run, scene.pilot_is_a_sample)
     };
@@ -496,8 +497,7 @@ fn adaptive_passes(
     // The pilot samples that stay are this render's (or its checkpoint's) when it starts at 0.
     let first_shard = share.range.start == 0;
     let holds_pilot = |i: usize| first_shard && pixels[i].keeps_pilot() && shown(i);
-    // The corner pass took about a sample per pixel of the time, and none of the means.
-    let budget = if at_corners { average - 1.0 } else { average };
+    let budget = average - spent;
     let counts = allocate(&pixels, budget, scene.floor_share);
     let one_ray: Vec<bool> = pixels.iter().map(|p| p.one_ray).collect();
     let pilots: Vec<PilotSample> = pixels.iter().map(|p| p.pilot).collect();
@@ -560,13 +560,16 @@ fn keep_only(film: &mut Film, keep: impl Fn(usize) -> bool + Sync) {
         .retain(|&(x, y)| keep(y as usize * w + x as usize));
 }
 
-/// What the adaptive pilot leaves: its film, its rays, what it decided per pixel, and
-/// the corners' control variate where it was taken at the corners.
+/// What the adaptive pilot leaves: its film, its rays, what it decided per pixel, the
+/// corners' control variate where it was taken at the corners, and the samples per pixel
+/// its rays took from the budget without going into any mean (the corners'; the pixels'
+/// pilot samples are counted in [`allocate`]).
 struct Pilot {
     film: Film,
     rays: RayCounts,
     pixels: Vec<AdaptivePixel>,
     control: Option<corners::Control>,
+    spent: f64,
 }
 
 /// What adaptive sampling reads from the scene before its pilot.
@@ -701,22 +704,49 @@ fn pilot_pass(options: &RenderOptions, run: &Pass, exact: bool) -> Pilot {
         rays,
         pixels,
         control: None,
+        spent: 0.0,
     }
 }
 
-/// The adaptive pilot at the pixels' corners ([`corners`]): none of its samples is a
-/// pixel's, so the film it leaves is empty.
-fn corner_pilot(options: &RenderOptions, run: &Pass) -> Pilot {
-    let plan = SamplePlan::Lattice {
-        seed: options.seed ^ CORNER_SEED,
-    };
-    let PassOutput { film, rays, work } = run(&plan, &(), None);
-    let (pixels, control) = corners::corner_pixels(&film, &work);
+/// The adaptive pilot at the pixels' corners ([`corners`]) in two passes: every other
+/// corner across and down, then the other corners of the 2 x 2 blocks of pixels where
+/// those change ([`corners::refinement`]) for an average of `average` samples per pixel.
+/// None of its samples is a pixel's, so the film it leaves is empty.
+fn corner_pilot(options: &RenderOptions, run: &Pass, average: f64) -> Pilot {
+    let seed = options.seed ^ CORNER_SEED;
+    let (cw, ch) = (options.width + 1, options.height + 1);
+    let coarse = corners::coarse(cw, ch);
+    let first = run(
+        &SamplePlan::Lattice {
+            seed,
+            traced: &coarse,
+        },
+        &(),
+        None,
+    );
+    let rest = corners::refinement(&first.film, corners::refine_threshold(average));
+    let more = run(
+        &SamplePlan::Lattice {
+            seed,
+            traced: &rest,
+        },
+        &(),
+        Some(first.film),
+    );
+    let mut rays = first.rays;
+    rays.add(&more.rays);
+    let mut work = first.work;
+    for (a, b) in work.iter_mut().zip(more.work) {
+        a.merge(b);
+    }
+    let traced = coarse.iter().zip(&rest).filter(|&(a, b)| *a || *b).count();
+    let (pixels, control) = corners::corner_pixels(&more.film, &mut work);
     Pilot {
-        film: emptied(film, options.width, options.height),
+        film: emptied(more.film, options.width, options.height),
         rays,
         pixels,
         control: Some(control),
+        spent: traced as f64 / (options.width * options.height) as f64,
     }
 }
 
@@ -794,9 +824,9 @@ enum SamplePlan<'a> {
         fixed_light: Option<u32>,
     },
     /// The adaptive pilot at the pixels' corners ([`corners`]): one sample near each
-    /// point of the (w + 1) x (h + 1) grid of the pixels' corners (in scenes without area
-    /// lights: [`AdaptiveScene`]).
-    Lattice { seed: u64 },
+    /// point of the (w + 1) x (h + 1) grid of the pixels' corners that `traced` marks (in
+    /// scenes without area lights: [`AdaptiveScene`]).
+    Lattice { seed: u64, traced: &'a [bool] },
     /// Adaptive sampling: pixel i has counts[i] samples (all of its own strata; none
     /// where the count is 0) and takes those of its `share` from `resume_at[i]` on (a
     /// checkpoint holds those before; empty: none), with one shadow ray per light per
@@ -933,9 +963,9 @@ impl SamplePlan<'_> {
                     },
                 }
             }
-            &SamplePlan::Lattice { seed } => PixelPlan {
+            &SamplePlan::Lattice { seed, traced } => PixelPlan {
                 spp: 1,
-                range: 0..1,
+                range: 0..u32::from(traced[i]),
                 seed,
                 fixed_light: false,
                 position: PositionPlan { seed, first: 0 },
