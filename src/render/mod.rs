@@ -739,14 +739,16 @@ fn corner_pilot(options: &RenderOptions, run: &Pass, average: f64) -> Pilot {
     for (a, b) in work.iter_mut().zip(more.work) {
         a.merge(b);
     }
-    let traced = coarse.iter().zip(&rest).filter(|&(a, b)| *a || *b).count();
     let (pixels, control) = corners::corner_pixels(&more.film, &mut work);
+    // The passes' rays in samples of a pixel's mean cost: the corners traced again lie
+    // where the image changes, whose rays cost more than the average corner's.
+    let sample: f64 = pixels.iter().map(|p| p.cost).sum::<f64>() / pixels.len() as f64;
     Pilot {
         film: emptied(more.film, options.width, options.height),
+        spent: rays.total() as f64 / sample / pixels.len() as f64,
         rays,
         pixels,
         control: Some(control),
-        spent: traced as f64 / (options.width * options.height) as f64,
     }
 }
 
