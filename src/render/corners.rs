@@ -140,6 +140,7 @@ pub(super) fn corner_pixels(
     (pixels, control)
 }
 
+/// The corners' values in single precision (0 where none was traced).
 fn means(corners: &Film) -> Vec<[f32; 3]> {
     corners
         .pixels
@@ -206,12 +207,13 @@ pub(super) fn refinement(first: &Film, threshold: f64) -> Vec<bool> {
     let own: Vec<f64> = (0..bw * bh)
         .map(|b| {
             let (bx, by) = (b % bw, b / bw);
-            let blocks = [(bx, by), (bx + 1, by), (bx, by + 1), (bx + 1, by + 1)];
-            let most = blocks
+            // The block's corners on the coarse grid.
+            let ends = [(bx, by), (bx + 1, by), (bx, by + 1), (bx + 1, by + 1)];
+            let most = ends
                 .iter()
                 .map(|&(x, y)| bend[y * xs.len() + x])
                 .fold(0.0, f64::max);
-            super::neighbour_change(&values, &blocks.map(|(x, y)| at(x, y))).min(most)
+            super::neighbour_change(&values, &ends.map(|(x, y)| at(x, y))).min(most)
         })
         .collect();
     let mut rest = vec![false; cw * ch];
@@ -419,8 +421,9 @@ mod tests {
     }
 
     /// On a ramp the coarse corners ask for no more (at a threshold of 1e-6, what 270 spp
-    /// would take), and the corners left out take the ramp's values, across both an even and an odd number of pixels (the last
-    /// column and row are traced whatever their parity), so the pixels show no change.
+    /// would take), and the corners left out take the ramp's values, across both an even
+    /// and an odd number of pixels (the last column and row are traced whatever their
+    /// parity), so the pixels show no change.
     #[test]
     fn a_coarse_ramp_is_filled_exactly() {
         for (cw, ch) in [(9, 6), (8, 7)] {

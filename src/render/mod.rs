@@ -740,12 +740,13 @@ fn corner_pilot(options: &RenderOptions, run: &Pass, average: f64) -> Pilot {
         a.merge(b);
     }
     let (pixels, control) = corners::corner_pixels(&more.film, &mut work);
-    // The passes' rays in samples of a pixel's mean cost: the corners traced again lie
-    // where the image changes, whose rays cost more than the average corner's.
-    let sample: f64 = pixels.iter().map(|p| p.cost).sum::<f64>() / pixels.len() as f64;
+    // The passes' rays in samples of a pixel's mean cost (their total over the pixels'
+    // summed costs): the corners traced again lie where the image changes, whose rays
+    // cost more than the average corner's.
+    let costs: f64 = pixels.iter().map(|p| p.cost).sum();
     Pilot {
         film: emptied(more.film, options.width, options.height),
-        spent: rays.total() as f64 / sample / pixels.len() as f64,
+        spent: rays.total() as f64 / costs.max(1.0),
         rays,
         pixels,
         control: Some(control),
