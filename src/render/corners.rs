@@ -40,8 +40,8 @@ use super::film::Film;
 use super::{AdaptivePixel, PilotSample, PixelWork};
 
 /// The least average (samples per pixel) at which an adaptive render takes its pilot at
-/// the corners (module docs): the corner pass's sample per pixel goes into no mean, so at
-/// a small budget it costs more than it saves. Measured at 640x480 against POV-Ray, RMSE of
+/// the corners (module docs): the corner passes' rays go into no mean, so at a small
+/// budget they cost more than they save. Measured at 640x480 against POV-Ray, RMSE of
 /// the corners against the pixels' pilot, at 3 / 4 / 6 / 8 spp: checker +9 / -9 / -15 /
 /// -13%, pattern_gradient +12 / -3 / -12 / -19%, shape_quadrics +6 / -7 / -10 / -13%,
 /// reflection +8 / -6 / -12 / -14%, csg_operations +15 / +1 / -5 / +1%, glass +19 / +7 /
