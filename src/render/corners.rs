@@ -7,8 +7,8 @@
 //! traces every other corner across and down first, then the rest only where those change
 //! ([`refinement`]); a corner left out takes its traced neighbours' mean. Against every
 //! corner traced (a sample per pixel), at 640x480, 2 seeds, RMSE at 4 / 6 / 8 / 16 spp:
-//! checker -9 / -1 / +1 / -3%, pattern_gradient -4 / 0 / 0 / 0%, shape_quadrics -11 / -2
-//! / 0 / 0%, reflection -12 / -5 / -3 / 0%, csg_operations -4 / -1 / -1 / -9%, glass 0 / +2
+//! checker -9 / -1 / +1 / -3%, pattern_gradient -4 / 0 / 0 / 0%, shape_quadrics -12 / -2
+//! / -2 / 0%, reflection -12 / -5 / -3 / 0%, csg_operations -4 / 0 / -1 / -9%, glass +1 / +3
 //! / +3 / -9%; the coarse corners alone (a quarter of a sample per pixel) lost on four of
 //! the six scenes (checker at 8 spp +56%, glass +55%). From there on:
 //! - a straight edge that crosses a pixel puts its corners on both sides, so the range of
