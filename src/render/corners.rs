@@ -99,6 +99,7 @@ impl Control {
 /// with area lights keeps the pixels' pilot, so no pixel is near a penumbra: each takes
 /// one shadow ray per light per sample, all its samples from its point 0 (no pilot sample
 /// is a pixel's).
+///
 /// Corners the pilot did not trace ([`refinement`]) take the mean of the two traced
 /// corners beside them, or of the four around them, and their cost.
 pub(super) fn corner_pixels(
@@ -110,25 +111,12 @@ pub(super) fn corner_pixels(
     fill_untraced(corners, &mut values, work);
     let work = &*work;
     let (w, h) = (cw - 1, ch - 1);
-    let corners_of = |i: usize| -> [usize; 4] {
-        let (x, y) = (i % w, i / w);
-        [
-            y * cw + x,
-            y * cw + x + 1,
-            (y + 1) * cw + x,
-            (y + 1) * cw + x + 1,
-        ]
-    };
     let bend = bends(&values, &whole_line(cw), &whole_line(ch));
     let own: Vec<f64> = (0..w * h)
-        .map(|i| {
-            let c = corners_of(i);
-            let range = super::neighbour_change(&values, &c);
-            range.min(c.iter().map(|&k| bend[k]).fold(0.0, f64::max))
-        })
+        .map(|i| cell_change(&values, &bend, cell_corners(i, w)))
         .collect();
     let pixels = super::per_neighbourhood(w, h, |i, near| {
-        let c = corners_of(i);
+        let c = cell_corners(i, w);
         AdaptivePixel {
             change: change(&own, i, near),
             cost: super::neighbour_cost(work, &c),
@@ -138,6 +126,23 @@ pub(super) fn corner_pixels(
     });
     let control = Control { width: cw, values };
     (pixels, control)
+}
+
+/// The four corners of cell i of a grid w cells wide (w + 1 corners).
+fn cell_corners(i: usize, w: usize) -> [usize; 4] {
+    let (x, y, cw) = (i % w, i / w, w + 1);
+    [
+        y * cw + x,
+        y * cw + x + 1,
+        (y + 1) * cw + x,
+        (y + 1) * cw + x + 1,
+    ]
+}
+
+/// A cell's change: its corners' range, or the most they bend where that is less.
+fn cell_change(values: &[[f32; 3]], bend: &[f64], corners: [usize; 4]) -> f64 {
+    let most = corners.iter().map(|&k| bend[k]).fold(0.0, f64::max);
+    super::neighbour_change(values, &corners).min(most)
 }
 
 /// The corners' values in single precision (0 where none was traced).
@@ -153,10 +158,14 @@ fn means(corners: &Film) -> Vec<[f32; 3]> {
 /// across and down, and the last column and row, so that every corner left out lies
 /// midway between two traced ones, or amid four.
 pub(super) fn coarse(cw: usize, ch: usize) -> Vec<bool> {
-    let on = |i: usize, n: usize| i.is_multiple_of(2) || i + 1 == n;
     (0..cw * ch)
-        .map(|k| on(k % cw, cw) && on(k / cw, ch))
+        .map(|k| on_coarse_line(k % cw, cw) && on_coarse_line(k / cw, ch))
         .collect()
+}
+
+/// Whether position i along an axis n corners long is a [`coarse`] one.
+fn on_coarse_line(i: usize, n: usize) -> bool {
+    i.is_multiple_of(2) || i + 1 == n
 }
 
 /// Every position along an axis n corners long.
@@ -166,9 +175,7 @@ fn whole_line(n: usize) -> Vec<usize> {
 
 /// The positions of the [`coarse`] corners along an axis n corners long.
 fn coarse_line(n: usize) -> Vec<usize> {
-    (0..n)
-        .filter(|&i| i.is_multiple_of(2) || i + 1 == n)
-        .collect()
+    (0..n).filter(|&i| on_coarse_line(i, n)).collect()
 }
 
 /// The change above which a block of 2 x 2 pixels takes the rest of its corners, at an
@@ -199,22 +206,13 @@ pub(super) fn refinement(first: &Film, threshold: f64) -> Vec<bool> {
     let values = means(first);
     let (xs, ys) = (coarse_line(cw), coarse_line(ch));
     let (bw, bh) = (xs.len() - 1, ys.len() - 1);
-    let at = |bx: usize, by: usize| ys[by] * cw + xs[bx];
-    let sub: Vec<[f32; 3]> = (0..xs.len() * ys.len())
-        .map(|k| values[at(k % xs.len(), k / xs.len())])
+    // The coarse corners' values, as a grid of their own whose cells are the blocks.
+    let coarse_values: Vec<[f32; 3]> = (0..xs.len() * ys.len())
+        .map(|k| values[ys[k / xs.len()] * cw + xs[k % xs.len()]])
         .collect();
-    let bend = bends(&sub, &xs, &ys);
+    let bend = bends(&coarse_values, &xs, &ys);
     let own: Vec<f64> = (0..bw * bh)
-        .map(|b| {
-            let (bx, by) = (b % bw, b / bw);
-            // The block's corners on the coarse grid.
-            let ends = [(bx, by), (bx + 1, by), (bx, by + 1), (bx + 1, by + 1)];
-            let most = ends
-                .iter()
-                .map(|&(x, y)| bend[y * xs.len() + x])
-                .fold(0.0, f64::max);
-            super::neighbour_change(&values, &ends.map(|(x, y)| at(x, y))).min(most)
-        })
+        .map(|b| cell_change(&coarse_values, &bend, cell_corners(b, bw)))
         .collect();
     let mut rest = vec![false; cw * ch];
     for b in 0..bw * bh {
