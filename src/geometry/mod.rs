@@ -14,6 +14,7 @@ mod profile;
 mod ray;
 mod revolve;
 mod roots;
+mod shaft;
 mod shapes;
 mod superellipsoid;
 mod transform;
@@ -34,13 +35,14 @@ pub use poly::{MAX_ORDER as POLY_MAX_ORDER, PolyData, term_count as poly_term_co
 pub use prism::PrismData;
 pub use ray::{Ray, offset_point, offset_scale};
 pub use revolve::{LatheData, SorData};
+pub use shaft::Shaft;
 pub use shapes::{
     LineInside, PolygonData, ShapeKind, ShapeTables, TriangleData, plane_hit, sphere_first_hit,
 };
 pub use superellipsoid::Superellipsoid;
 pub use transform::Transform;
 pub use world::{
-    CsgOp, Hit, Item, MaterialBlend, NO_ITEM, PREPARED_BYTES_PER_PRIMITIVE, Primitive,
+    CsgOp, Hit, Item, MaterialBlend, NO_ITEM, Occluders, PREPARED_BYTES_PER_PRIMITIVE, Primitive,
     SurfacePoint, TexturePoint, World, WorldBuilder, flags,
 };
 

@@ -28,6 +28,9 @@ pub mod flags {
 }
 
 mod instance;
+mod occluders;
+
+pub use occluders::Occluders;
 
 pub use instance::Instance;
 
@@ -204,6 +207,9 @@ pub struct World {
     csg: Vec<CsgNode>,
     bvh: Bvh,
     unbounded: Vec<u32>,
+    /// The unbounded items' extents (infinite on some sides), for shafts
+    /// ([`World::shaft_occluders`]).
+    unbounded_extents: Vec<Aabb>,
     /// Each top-level item's place in the scene's order, sorted by item: of two bounded
     /// surfaces met at the same distance, the one declared first is seen, whatever the
     /// tree's shape (advanced/pawns' rosewood squares, declared before the pine board their
@@ -288,6 +294,7 @@ impl WorldBuilder {
             csg: self.csg,
             bvh: Bvh::default(),
             unbounded: Vec::new(),
+            unbounded_extents: Vec::new(),
             declared: (0..).zip(&self.top).map(|(k, i)| (i.0, k)).collect(),
             photon_targets: Vec::new(),
             instances: self.instances,
@@ -303,6 +310,11 @@ impl WorldBuilder {
         world.bvh = bvh;
         world.unbounded = unbounded;
         world.primitives_in_leaf_order();
+        world.unbounded_extents = world
+            .unbounded
+            .iter()
+            .map(|&i| world.item_extent(i))
+            .collect();
         world
     }
 }
@@ -526,6 +538,7 @@ impl World {
             + self.bvh.nodes.capacity() * size_of::<super::bvh::Node>()
             + self.bvh.items.capacity() * 4
             + self.unbounded.capacity() * 4
+            + self.unbounded_extents.capacity() * size_of::<Aabb>()
             + self.declared.capacity() * size_of::<(u32, u32)>()
             + self.tables.memory_bytes()
             + self.instances.capacity() * size_of::<Instance>()

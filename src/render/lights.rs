@@ -47,6 +47,8 @@ pub struct PreparedArea {
     cdf2: Vec<f64>,
     /// The grid's points by weight, for covering it a pixel at a time.
     pub order: WeightOrder,
+    /// The points the adaptive rule tests where all agree ([`agreeing_points`]).
+    pub agreeing: u32,
 }
 
 /// A light grid's points laid end to end on a line of length [`WeightOrder::TOTAL`], each
@@ -191,6 +193,7 @@ impl PreparedLight {
             cdf1: cumulative(&grid_weights(a.size1.max(1))),
             cdf2: cumulative(&grid_weights(a.size2.max(1))),
             order: WeightOrder::new(&grid_weights(a.size1.max(1)), &grid_weights(a.size2.max(1))),
+            agreeing: agreeing_points(a.size1.max(1), a.size2.max(1), a.adaptive.unwrap_or(100)),
         });
         PreparedLight {
             kind: light.kind,
@@ -437,6 +440,24 @@ impl PreparedArea {
         }
     }
 
+    /// Corners, in order around it, of a quadrilateral that holds every point of the light
+    /// `frame` places ([`Self::sample_point`], [`Self::point_at`]): the grid grown by half
+    /// a cell where it jitters, by the circular mapping's shift, and by a trillionth for
+    /// rounding. For shaft culling ([`crate::geometry::Shaft`]).
+    pub fn extent(&self, frame: &AreaFrame, mode: AreaLightMode) -> [DVec3; 4] {
+        let reach = |n: u32| match mode {
+            AreaLightMode::Continuous => 0.5,
+            AreaLightMode::Pov if n <= 1 => 0.0,
+            AreaLightMode::Pov if self.jitter => 0.5 + 0.5 / f64::from(n - 1),
+            AreaLightMode::Pov => 0.5,
+        };
+        let shift = if self.circular { 0.001 } else { 0.0 };
+        let grown = |n: u32| (reach(n) + shift) * (1.0 + 1e-12);
+        let (u, v) = (grown(self.size1), grown(self.size2));
+        let at = |su: f64, sv: f64| frame.centre + frame.axis1 * (su * u) + frame.axis2 * (sv * v);
+        [at(-1.0, -1.0), at(1.0, -1.0), at(1.0, 1.0), at(-1.0, 1.0)]
+    }
+
     /// The light position for grid coordinates (u, v) in [-1/2, 1/2]: POV-Ray's circular
     /// mapping and orient.
     fn place(&self, frame: &AreaFrame, mut u: f64, mut v: f64) -> DVec3 {
@@ -590,6 +611,40 @@ impl<F: FnMut(DVec3) -> DVec3> GridTests<'_, F> {
             + self.rect((ub, vb, u2, v2), far, level + 1))
             * 0.25
     }
+}
+
+/// How many grid points [`PreparedArea::adaptive_filter`] tests where every test agrees:
+/// the corners, and the points of the splits its `limit` forces (a 9 x 9 grid at
+/// `adaptive 1`: 3 x 3). The split follows `GridTests::rect`'s.
+fn agreeing_points(n1: u32, n2: u32, limit: u32) -> u32 {
+    fn split(
+        tested: &mut [bool],
+        n1: usize,
+        (u1, v1, u2, v2): (usize, usize, usize, usize),
+        level: u32,
+        limit: u32,
+    ) {
+        for (u, v) in [(u1, v1), (u2, v1), (u1, v2), (u2, v2)] {
+            tested[v * n1 + u] = true;
+        }
+        if !(u2 - u1 > 1 || v2 - v1 > 1) || level >= limit {
+            return;
+        }
+        let (ua, ub) = ((u1 + u2) / 2, (u1 + u2).div_ceil(2));
+        let (va, vb) = ((v1 + v2) / 2, (v1 + v2).div_ceil(2));
+        for quarter in [
+            (u1, v1, ua, va),
+            (ub, v1, u2, va),
+            (u1, vb, ua, v2),
+            (ub, vb, u2, v2),
+        ] {
+            split(tested, n1, quarter, level + 1, limit);
+        }
+    }
+    let (n1, n2) = (n1 as usize, n2 as usize);
+    let mut tested = vec![false; n1 * n2];
+    split(&mut tested, n1, (0, 0, n1 - 1, n2 - 1), 0, limit);
+    tested.iter().filter(|&&t| t).count() as u32
 }
 
 thread_local! {
@@ -791,6 +846,104 @@ mod tests {
         assert_eq!(pick(&cdf, 0.9999).0, 2);
         let (_, r) = pick(&cdf, 0.5);
         assert!((r - 0.5).abs() < 1e-12);
+    }
+
+    /// Where every shadow ray arrives, the adaptive rule tests as many points as
+    /// `agreeing_points` counts: 3 x 3 on a 9 x 9 grid at `adaptive 1`, 5 x 5 at 2, the
+    /// corners alone at 0, and a 4 x 3 grid whole.
+    #[test]
+    fn the_agreeing_rule_tests_the_counted_points() {
+        for (n1, n2, adaptive, expected) in [
+            (9, 9, 1, 9),
+            (9, 9, 2, 25),
+            (9, 9, 0, 4),
+            (4, 3, 2, 12),
+            (1, 5, 1, 3),
+        ] {
+            let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
+            light.area = Some(crate::scene::AreaLight {
+                axis1: DVec3::X,
+                axis2: DVec3::Z,
+                size1: n1,
+                size2: n2,
+                adaptive: Some(adaptive),
+                jitter: true,
+                circular: false,
+                orient: false,
+            });
+            let prepared = PreparedLight::new(&light);
+            let area = prepared.area.as_ref().unwrap();
+            let mut tests = 0;
+            let filter = area.adaptive_filter(DVec3::Y, DVec3::Y, DVec3::ONE, 7, |_| {
+                tests += 1;
+                DVec3::ONE
+            });
+            assert_eq!(filter, DVec3::ONE);
+            assert_eq!(
+                (tests, area.agreeing),
+                (expected, expected),
+                "{n1} x {n2} adaptive {adaptive}"
+            );
+        }
+    }
+
+    /// Every point a light places from a shading point, by its grid (jittered or not,
+    /// circular or not) or uniformly, lies in the quadrilateral [`PreparedArea::extent`]
+    /// gives, and the extent is no more than the grid's half cell and rounding larger.
+    #[test]
+    fn a_lights_extent_holds_every_point_it_places() {
+        let mut uniform = crate::geometry::uniform_stream(0xbb67_ae85_84ca_a73bu64);
+        let (a1, a2) = (DVec3::new(3.0, 0.0, 0.0), DVec3::new(0.0, 0.0, 2.0));
+        for (size1, size2, jitter, circular) in [
+            (9, 9, true, false),
+            (4, 3, false, false),
+            (1, 5, true, false),
+            (7, 7, true, true),
+            (1, 1, false, true),
+        ] {
+            let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
+            light.area = Some(crate::scene::AreaLight {
+                axis1: a1,
+                axis2: a2,
+                size1,
+                size2,
+                adaptive: None,
+                jitter,
+                circular,
+                orient: false,
+            });
+            let prepared = PreparedLight::new(&light);
+            let area = prepared.area.as_ref().unwrap();
+            let frame = area.frame(DVec3::new(1.0, 5.0, -1.0), DVec3::Y);
+            for mode in [AreaLightMode::Pov, AreaLightMode::Continuous] {
+                let corners = area.extent(&frame, mode);
+                let half =
+                    |c: DVec3, axis: DVec3| (c - frame.centre).dot(axis) / axis.length_squared();
+                let (u, v) = (half(corners[2], a1), half(corners[2], a2));
+                for _ in 0..2_000 {
+                    let s = (uniform(), uniform());
+                    let points = [
+                        area.sample_point(&frame, s, mode),
+                        area.point_at(
+                            &frame,
+                            (s.0 * f64::from(size1 * size2)) as u32,
+                            (uniform(), uniform()),
+                        ),
+                    ];
+                    for p in points
+                        .into_iter()
+                        .take(if mode == AreaLightMode::Pov { 2 } else { 1 })
+                    {
+                        assert!(
+                            half(p, a1).abs() <= u && half(p, a2).abs() <= v,
+                            "{p} outside {u} {v}"
+                        );
+                    }
+                }
+                let most = |n: u32| if n > 1 && jitter { 0.5 + 0.5 / f64::from(n - 1) } else { 0.5 } + 0.002;
+                assert!(u <= most(size1) && v <= most(size2), "{u} {v}");
+            }
+        }
     }
 
     #[test]

@@ -1558,7 +1558,7 @@ impl TileJob<'_> {
                 };
                 let counts = &out.0;
                 work[x - x0].merge(PixelWork {
-                    rays: (counts.total() - before.total())
+                    rays: (counts.work() - before.work())
                         .try_into()
                         .unwrap_or(u32::MAX),
                     lit: counts.area_lit > before.area_lit,

@@ -3,6 +3,7 @@
 //! vectorises without target features) in a tree half as deep.
 
 use std::mem::MaybeUninit;
+use std::ops::Range;
 
 use glam::DVec3;
 
@@ -75,14 +76,20 @@ impl Node {
             .fold(0, |acc, (i, &lane)| acc | (lane as u8) << (2 * i))
     }
 
+    /// The box of one lane, in double precision.
+    fn lane_box(&self, lane: usize) -> Aabb {
+        let corner = |b: usize| DVec3::from_array(self.bounds[b].map(|v| f64::from(v[lane])));
+        Aabb {
+            min: corner(0),
+            max: corner(1),
+        }
+    }
+
     /// The box of the node's children together.
     fn aabb(&self) -> Aabb {
         (0..WIDTH)
             .filter(|&lane| self.child[lane] != EMPTY)
-            .fold(Aabb::EMPTY, |a, lane| {
-                let corner = |b: usize| DVec3::from_array(self.bounds[b].map(|v| v[lane].into()));
-                a.union(&Aabb::new(corner(0), corner(1)))
-            })
+            .fold(Aabb::EMPTY, |a, lane| a.union(&self.lane_box(lane)))
     }
 }
 
@@ -398,29 +405,82 @@ impl Bvh {
         mut test: impl FnMut(u32) -> bool,
     ) -> bool {
         let p = p.to_array();
+        let holds = |node: &Node, lane: usize| {
+            (0..3).all(|a| {
+                f64::from(node.bounds[0][a][lane]) <= p[a]
+                    && p[a] <= f64::from(node.bounds[1][a][lane])
+            })
+        };
+        !self.walk::<N>(holds, |mut positions, _, _| {
+            !positions.any(|k| test(self.item(k)))
+        })
+    }
+
+    /// Visits every item whose box may meet a region: `meets` says whether a box may (it
+    /// may say so of a box that does not), and `visit` gets each such item with the box it
+    /// was judged by (its own in a tree walked as a list, else its leaf's) and stops the
+    /// walk by returning false. Returns whether the walk ran to the end.
+    pub fn each_meeting(
+        &self,
+        meets: impl Fn(&Aabb) -> bool,
+        mut visit: impl FnMut(u32, &Aabb) -> bool,
+    ) -> bool {
+        let few = !self.few.is_empty();
+        let lane_meets = |node: &Node, lane: usize| meets(&node.lane_box(lane));
+        let leaf = |positions: Range<usize>, node: &Node, lane: usize| {
+            let lane_box = node.lane_box(lane);
+            for k in positions {
+                let own = few.then(|| {
+                    let [x, y, z] = self.few[k];
+                    Aabb::new(DVec3::new(x[0], y[0], z[0]), DVec3::new(x[1], y[1], z[1]))
+                });
+                if own.as_ref().is_some_and(|b| !meets(b)) {
+                    continue;
+                }
+                if !visit(self.item(k), own.as_ref().unwrap_or(&lane_box)) {
+                    return false;
+                }
+            }
+            true
+        };
+        if self.depth * 3 < SHALLOW_STACK {
+            self.walk::<SHALLOW_STACK>(lane_meets, leaf)
+        } else {
+            self.walk::<DEEP_STACK>(lane_meets, leaf)
+        }
+    }
+
+    /// Walks the subtrees whose boxes `meets` accepts, handing each leaf met (its positions,
+    /// its node and lane) to `leaf`, which stops the walk by returning false. Returns
+    /// whether the walk ran to the end. Absent lanes hold empty boxes, which `meets` must
+    /// refuse.
+    fn walk<const N: usize>(
+        &self,
+        meets: impl Fn(&Node, usize) -> bool,
+        mut leaf: impl FnMut(Range<usize>, &Node, usize) -> bool,
+    ) -> bool {
+        if self.nodes.is_empty() {
+            return true;
+        }
         let mut stack = [0u32; N];
         let mut top = 1;
         while top > 0 {
             top -= 1;
             let node = &self.nodes[stack[top] as usize];
             for lane in 0..WIDTH {
-                let holds = (0..3).all(|a| {
-                    f64::from(node.bounds[0][a][lane]) <= p[a]
-                        && p[a] <= f64::from(node.bounds[1][a][lane])
-                });
-                if !holds {
+                if !meets(node, lane) {
                     continue;
                 }
-                let (child, count) = (node.child[lane], usize::from(node.count[lane]));
+                let (child, count) = (node.child[lane] as usize, usize::from(node.count[lane]));
                 if count == 0 {
-                    stack[top] = child;
+                    stack[top] = child as u32;
                     top += 1;
-                } else if (child as usize..child as usize + count).any(|k| test(self.item(k))) {
-                    return true;
+                } else if !leaf(child..child + count, node, lane) {
+                    return false;
                 }
             }
         }
-        false
+        true
     }
 
     /// The box around every item (empty for an empty tree).

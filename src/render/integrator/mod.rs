@@ -74,6 +74,10 @@ pub struct RayCounts {
     /// penumbra (adaptive sampling's pilot reads them per pixel).
     pub area_lit: u64,
     pub area_shadowed: u64,
+    /// Shadow rays towards area lights left untraced because nothing meets their shaft
+    /// ([`crate::geometry::Shaft`]): a pixel's cost to adaptive sampling still counts
+    /// them ([`RayCounts::work`]).
+    pub spared: u64,
 }
 
 impl RayCounts {
@@ -83,10 +87,22 @@ impl RayCounts {
         self.secondary += o.secondary;
         self.area_lit += o.area_lit;
         self.area_shadowed += o.area_shadowed;
+        self.spared += o.spared;
     }
 
     pub fn total(&self) -> u64 {
         self.camera + self.shadow + self.secondary
+    }
+
+    /// A pixel's cost to adaptive sampling: its rays, and the shadow rays its shafts
+    /// spared. Measured at 640x480 against POV-Ray (2 seeds, RMSE at 1.0625 / 2 / 4 / 8
+    /// spp): with the spared rays left out of the cost, the lit pixels, cheaper, took
+    /// more of the samples, and did less with them than the penumbrae would have:
+    /// area_adaptive 0.00309 / 0.00174 / 0.00115 / 0.00082 against 0.00269 / 0.00136 /
+    /// 0.00094 / 0.00069 counted, soft_shadow 0.00594 / 0.00194 / 0.00130 / 0.00104
+    /// against 0.00500 / 0.00162 / 0.00112 / 0.00087, in about the same time.
+    pub fn work(&self) -> u64 {
+        self.total() + self.spared
     }
 }
 
@@ -1081,16 +1097,17 @@ mod tests {
         }
     }
 
-    /// Under a fully visible `adaptive` area light, POV-Ray's rule tests the grid's corners
-    /// and finds them agreeing; a one-ray pixel's integrator sends one shadow ray instead,
-    /// and sees the same light.
+    /// Under a fully visible `adaptive` area light, POV-Ray's rule would find the grid's
+    /// corners agreeing; nothing meets the shaft from the floor to the light, so it needs
+    /// no ray at all. A one-ray pixel's integrator sends one shadow ray instead, and both
+    /// see the same light.
     #[test]
     fn one_ray_pixels_take_one_shadow_ray_for_an_adaptive_light() {
         let light = "light_source { <0, 5, 0> rgb 1 area_light <2, 0, 0>, <0, 0, 2>, 9, 9
             adaptive 1 }";
         let (rule, rule_rays) = shade_floor(light, (0, 1), false, false);
         let (one, one_rays) = shade_floor(light, (0, 1), true, false);
-        assert!(rule_rays >= 4, "the adaptive rule's corners: {rule_rays}");
+        assert_eq!(rule_rays, 0, "an empty shaft");
         assert_eq!(one_rays, 1);
         assert!(
             (one - rule).abs().max_element() < 1e-12,
