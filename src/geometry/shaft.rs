@@ -18,7 +18,7 @@ const FACES: usize = 5;
 pub struct Shaft {
     /// The hull's box, grown by the margin.
     bounds: Aabb,
-    /// Unit normals `n` and offsets `d` of the faces: `n . x <= d` holds the hull.
+    /// Normals `n` and offsets `d` of the faces: `n . x <= d` holds the hull.
     normals: [DVec3; FACES],
     offsets: [f64; FACES],
     faces: usize,
@@ -28,14 +28,15 @@ pub struct Shaft {
 }
 
 impl Shaft {
-    /// The hull of `apex` and `base` (its corners in order around it; a flat or degenerate
-    /// quadrilateral is fine, a face without a direction is left out).
+    /// The hull of `apex` and `base` (the corners of a parallelogram in order around it; a
+    /// flat or degenerate one is fine, a face without a direction is left out).
     ///
     /// The margin, 1e-13 of the largest coordinate, covers the roundings of the shadow
     /// rays' directions and of the light's points (a few units of 1e-16 of the same
     /// magnitudes) a thousand times over, and stays below a shading point's offset from
     /// its surface (1e-11 of its coordinates, [`super::offset_scale`]), so that the
     /// surface a point lies on is left out where it faces the light.
+    #[inline]
     pub fn new(apex: DVec3, base: [DVec3; 4]) -> Shaft {
         let points = [apex, base[0], base[1], base[2], base[3]];
         let scale = points
@@ -55,28 +56,30 @@ impl Shaft {
         let centroid = points.iter().sum::<DVec3>() / 5.0;
         for k in 0..4 {
             let (a, b) = (base[k] - apex, base[(k + 1) % 4] - apex);
-            shaft.add_face(a.cross(b), apex, centroid, &points, margin);
+            shaft.add_face(a.cross(b), apex, centroid, margin);
         }
         let across = (base[1] - base[0]).cross(base[3] - base[0]);
-        shaft.add_face(across, base[0], centroid, &points, margin);
+        shaft.add_face(across, base[0], centroid, margin);
         shaft
     }
 
-    /// The face through `on` with normal `n`, turned away from the hull's `inner` point;
-    /// its offset is the farthest of the hull's points along it, so it holds them whichever
-    /// way rounding turned it.
-    fn add_face(&mut self, n: DVec3, on: DVec3, inner: DVec3, points: &[DVec3; 5], margin: f64) {
-        let length = n.length();
-        if !(length > 0.0 && length.is_finite()) {
+    /// The face through `on` with normal `n` (of any length), turned away from the hull's
+    /// `inner` point. Its offset is the farthest of the hull's points along it, so it holds
+    /// them whichever way rounding turned it, plus the margin times |n|'s 1-norm (at least
+    /// its length: no square root).
+    fn add_face(&mut self, n: DVec3, on: DVec3, inner: DVec3, margin: f64) {
+        let size = n.abs().element_sum();
+        if !(size > 0.0 && size.is_finite()) {
             return;
         }
-        let mut n = n / length;
-        if n.dot(inner - on) > 0.0 {
-            n = -n;
-        }
-        let farthest = points.iter().map(|&p| n.dot(p)).fold(f64::MIN, f64::max);
+        let n = if n.dot(inner - on) > 0.0 { -n } else { n };
+        let farthest = self
+            .points
+            .iter()
+            .map(|&p| n.dot(p))
+            .fold(f64::MIN, f64::max);
         self.normals[self.faces] = n;
-        self.offsets[self.faces] = farthest + margin;
+        self.offsets[self.faces] = farthest + margin * size;
         self.faces += 1;
     }
 
@@ -85,7 +88,7 @@ impl Shaft {
     /// plane's box is its half-space, grown a little, which a point on the plane's surface
     /// always meets.)
     pub fn beside(&self, normal: DVec3, distance: f64) -> bool {
-        let clear = self.margin * normal.length() + distance.abs() * 1e-13;
+        let clear = self.margin * normal.abs().element_sum() + distance.abs() * 1e-13;
         let sides = self.points.map(|p| normal.dot(p) - distance);
         sides.iter().all(|&s| s > clear) || sides.iter().all(|&s| s < -clear)
     }
@@ -99,11 +102,12 @@ impl Shaft {
         }
         (0..self.faces).any(|f| {
             let n = self.normals[f];
-            // The box's least value along n: each axis at the bound n's sign picks.
-            let least: f64 = (0..3)
-                .map(|a| n[a] * if n[a] >= 0.0 { b.min[a] } else { b.max[a] })
-                .sum();
-            least > self.offsets[f]
+            // The box's least value along n (each axis at the bound n's sign picks), and a
+            // bound on its rounding, which a box far larger than the hull needs.
+            let terms = DVec3::from_array(std::array::from_fn(|a| {
+                n[a] * if n[a] >= 0.0 { b.min[a] } else { b.max[a] }
+            }));
+            terms.element_sum() > self.offsets[f] + 4.0 * f64::EPSILON * terms.abs().element_sum()
         })
     }
 }

@@ -425,23 +425,21 @@ impl Bvh {
         meets: impl Fn(&Aabb) -> bool,
         mut visit: impl FnMut(u32, &Aabb) -> bool,
     ) -> bool {
-        let few = !self.few.is_empty();
+        if !self.few.is_empty() {
+            return self.few.iter().enumerate().all(|(k, &[x, y, z])| {
+                let own = Aabb {
+                    min: DVec3::new(x[0], y[0], z[0]),
+                    max: DVec3::new(x[1], y[1], z[1]),
+                };
+                !meets(&own) || visit(self.item(k), &own)
+            });
+        }
         let lane_meets = |node: &Node, lane: usize| meets(&node.lane_box(lane));
         let leaf = |positions: Range<usize>, node: &Node, lane: usize| {
             let lane_box = node.lane_box(lane);
-            for k in positions {
-                let own = few.then(|| {
-                    let [x, y, z] = self.few[k];
-                    Aabb::new(DVec3::new(x[0], y[0], z[0]), DVec3::new(x[1], y[1], z[1]))
-                });
-                if own.as_ref().is_some_and(|b| !meets(b)) {
-                    continue;
-                }
-                if !visit(self.item(k), own.as_ref().unwrap_or(&lane_box)) {
-                    return false;
-                }
-            }
-            true
+            positions
+                .into_iter()
+                .all(|k| visit(self.item(k), &lane_box))
         };
         if self.depth * 3 < SHALLOW_STACK {
             self.walk::<SHALLOW_STACK>(lane_meets, leaf)
