@@ -141,7 +141,7 @@ mod tests {
             let (u, v, t) = (uniform() * 2.0 - 1.0, uniform() * 2.0 - 1.0, uniform());
             let on_ray = DVec3::new(u, 4.0, v) * t;
             assert!(!s.misses(&cube(on_ray, 1e-9)), "{on_ray}");
-            // A point just inside the hull at its edges: a box of zero size.
+            // And a box of no size at the point itself.
             assert!(!s.misses(&Aabb::new(on_ray, on_ray)), "{on_ray}");
         }
         // Beside a side face, half-way up: the side x = y / 4 lies at x = 0.5 there.

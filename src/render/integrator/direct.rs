@@ -796,6 +796,14 @@ fn caustics_at(scene: &PreparedScene, ray: &Ray, hit: &Hit, material: &Material)
     caustic_factor(material.interior.caustics, n.dot(d))
 }
 
+/// About how many grid points one sample of [`cover_grid`] tests: the grid shared among
+/// the pixel's samples, a cover per [`PreparedArea::cover_shared`] of them.
+fn cover_rays(area: &PreparedArea, sampler: &PixelSampler) -> f64 {
+    let n = sampler.samples_per_pixel();
+    let covers = n.div_ceil(area.cover_shared());
+    f64::from(area.size1 * area.size2) * f64::from(covers) / f64::from(n)
+}
+
 /// The light's grid shared out over the pixel's samples, each point tested as often as any
 /// other and each sample weighing what it tests to the whole light. The grid's points lie
 /// end to end on a line, each as long as its weight in POV-Ray's grid sum ([`WeightOrder`],
@@ -815,14 +823,6 @@ fn caustics_at(scene: &PreparedScene, ray: &Ray, hit: &Hit, material: &Material)
 /// ([`crate::render::sampler::CellJitter`]).
 ///
 /// Each sample tests about K / min(N, C) + 1 points of a K-point grid.
-/// About how many grid points one sample of [`cover_grid`] tests: the grid shared among
-/// the pixel's samples, a cover per [`PreparedArea::cover_shared`] of them.
-fn cover_rays(area: &PreparedArea, sampler: &PixelSampler) -> f64 {
-    let n = sampler.samples_per_pixel();
-    let covers = n.div_ceil(area.cover_shared());
-    f64::from(area.size1 * area.size2) * f64::from(covers) / f64::from(n)
-}
-
 fn cover_grid(
     q: &ShadowQuery,
     area: &PreparedArea,
