@@ -736,6 +736,7 @@ pub fn grid_weights(n: u32) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::AreaLight;
 
     #[test]
     fn the_weight_line_holds_each_point_once_for_its_weight() {
@@ -801,9 +802,9 @@ mod tests {
         }
     }
 
-    fn grid_light(n1: u32, n2: u32) -> PreparedLight {
-        let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
-        light.area = Some(crate::scene::AreaLight {
+    /// A jittered n1 x n2 grid along x and z.
+    fn grid_area(n1: u32, n2: u32) -> AreaLight {
+        AreaLight {
             axis1: DVec3::X,
             axis2: DVec3::Z,
             size1: n1,
@@ -812,8 +813,17 @@ mod tests {
             jitter: true,
             circular: false,
             orient: false,
-        });
+        }
+    }
+
+    fn with_area(area: AreaLight) -> PreparedLight {
+        let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
+        light.area = Some(area);
         PreparedLight::new(&light)
+    }
+
+    fn grid_light(n1: u32, n2: u32) -> PreparedLight {
+        with_area(grid_area(n1, n2))
     }
 
     #[test]
@@ -860,18 +870,10 @@ mod tests {
             (4, 3, 2, 12),
             (1, 5, 1, 3),
         ] {
-            let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
-            light.area = Some(crate::scene::AreaLight {
-                axis1: DVec3::X,
-                axis2: DVec3::Z,
-                size1: n1,
-                size2: n2,
+            let prepared = with_area(AreaLight {
                 adaptive: Some(adaptive),
-                jitter: true,
-                circular: false,
-                orient: false,
+                ..grid_area(n1, n2)
             });
-            let prepared = PreparedLight::new(&light);
             let area = prepared.area.as_ref().unwrap();
             let mut tests = 0;
             let filter = area.adaptive_filter(DVec3::Y, DVec3::Y, DVec3::ONE, 7, |_| {
@@ -901,18 +903,13 @@ mod tests {
             (7, 7, true, true),
             (1, 1, false, true),
         ] {
-            let mut light = Light::point(DVec3::ZERO, DVec3::ONE);
-            light.area = Some(crate::scene::AreaLight {
+            let prepared = with_area(AreaLight {
                 axis1: a1,
                 axis2: a2,
-                size1,
-                size2,
-                adaptive: None,
                 jitter,
                 circular,
-                orient: false,
+                ..grid_area(size1, size2)
             });
-            let prepared = PreparedLight::new(&light);
             let area = prepared.area.as_ref().unwrap();
             let frame = area.frame(DVec3::new(1.0, 5.0, -1.0), DVec3::Y);
             for mode in [AreaLightMode::Pov, AreaLightMode::Continuous] {

@@ -387,23 +387,7 @@ impl Bvh {
     /// Whether `test` holds for an item whose box holds `p` (boxes are closed); stops at
     /// the first that does. For point queries: which children of a CSG node may hold a
     /// point.
-    pub fn any_containing(&self, p: DVec3, test: impl FnMut(u32) -> bool) -> bool {
-        if self.nodes.is_empty() {
-            return false;
-        }
-        if self.depth * 3 < SHALLOW_STACK {
-            // As many as a walk's stack: three more per level.
-            self.any_containing_in::<SHALLOW_STACK>(p, test)
-        } else {
-            self.any_containing_in::<DEEP_STACK>(p, test)
-        }
-    }
-
-    fn any_containing_in<const N: usize>(
-        &self,
-        p: DVec3,
-        mut test: impl FnMut(u32) -> bool,
-    ) -> bool {
+    pub fn any_containing(&self, p: DVec3, mut test: impl FnMut(u32) -> bool) -> bool {
         let p = p.to_array();
         let holds = |node: &Node, lane: usize| {
             (0..3).all(|a| {
@@ -411,7 +395,7 @@ impl Bvh {
                     && p[a] <= f64::from(node.bounds[1][a][lane])
             })
         };
-        !self.walk::<N>(holds, |mut positions, _, _| {
+        !self.walk(holds, |mut positions, _, _| {
             !positions.any(|k| test(self.item(k)))
         })
     }
@@ -441,25 +425,34 @@ impl Bvh {
                 .into_iter()
                 .all(|k| visit(self.item(k), &lane_box))
         };
-        if self.depth * 3 < SHALLOW_STACK {
-            self.walk::<SHALLOW_STACK>(lane_meets, leaf)
-        } else {
-            self.walk::<DEEP_STACK>(lane_meets, leaf)
-        }
+        self.walk(lane_meets, leaf)
     }
 
     /// Walks the subtrees whose boxes `meets` accepts, handing each leaf met (its positions,
     /// its node and lane) to `leaf`, which stops the walk by returning false. Returns
     /// whether the walk ran to the end. Absent lanes hold empty boxes, which `meets` must
     /// refuse.
-    fn walk<const N: usize>(
+    fn walk(
         &self,
         meets: impl Fn(&Node, usize) -> bool,
-        mut leaf: impl FnMut(Range<usize>, &Node, usize) -> bool,
+        leaf: impl FnMut(Range<usize>, &Node, usize) -> bool,
     ) -> bool {
         if self.nodes.is_empty() {
             return true;
         }
+        if self.depth * 3 < SHALLOW_STACK {
+            // As many as a walk's stack: three more per level.
+            self.walk_in::<SHALLOW_STACK>(meets, leaf)
+        } else {
+            self.walk_in::<DEEP_STACK>(meets, leaf)
+        }
+    }
+
+    fn walk_in<const N: usize>(
+        &self,
+        meets: impl Fn(&Node, usize) -> bool,
+        mut leaf: impl FnMut(Range<usize>, &Node, usize) -> bool,
+    ) -> bool {
         let mut stack = [0u32; N];
         let mut top = 1;
         while top > 0 {
