@@ -143,9 +143,10 @@ mod tests {
 
     /// Shadow rays from a point to points of a quadrilateral light, tested against the
     /// items of their shaft alone, are stopped exactly where a walk of the whole scene
-    /// stops them; where no item meets the shaft, none is. Scenes walked as a list (5
-    /// items) and as a tree (60), shafts from points on and beside the objects, lights
-    /// large and small; every outcome occurs (empty shafts, kept items, too many).
+    /// stops them; where no item meets the shaft, none is. Scenes walked as a list (3
+    /// items and the 2 planes) and as a tree (60), shafts from points anywhere among the
+    /// objects (inside some), lights large and small; every outcome occurs (empty shafts,
+    /// kept items, too many).
     #[test]
     fn the_shafts_items_stop_exactly_the_rays_a_walk_finds_stopped() {
         let mut next = crate::geometry::uniform_stream(0x6a09_e667_f3bc_c908u64);
