@@ -423,7 +423,8 @@ struct PassOutput {
 /// What one pixel's samples met in a pass.
 #[derive(Clone, Copy, Debug, Default)]
 struct PixelWork {
-    /// Rays traced, of all kinds: the pixel's cost.
+    /// Rays traced, of all kinds, and the shadow rays shafts spared: the pixel's cost
+    /// ([`integrator::RayCounts::work`]).
     rays: u32,
 
     /// Some shadow ray towards an area light arrived (wholly or in part).
@@ -746,7 +747,7 @@ fn corner_pilot(options: &RenderOptions, run: &Pass, average: f64) -> Pilot {
     let costs: f64 = pixels.iter().map(|p| p.cost).sum();
     Pilot {
         film: emptied(more.film, options.width, options.height),
-        spent: rays.total() as f64 / costs.max(1.0),
+        spent: rays.work() as f64 / costs.max(1.0),
         rays,
         pixels,
         control: Some(control),

@@ -461,7 +461,7 @@ impl Integrator<'_> {
         let pov = self.area_lights == AreaLightMode::Pov;
         let adaptive = area.adaptive.is_some() && pov && !self.one_ray;
         let rays = match self.light_samples {
-            _ if adaptive => f64::from(area.size1 * area.size2),
+            _ if adaptive => f64::from(area.agreeing),
             LightSamples::Cover if pov => cover_rays(area, sampler),
             LightSamples::Cover => 1.0,
             LightSamples::Fixed(n) => f64::from(n),
@@ -523,7 +523,8 @@ impl Integrator<'_> {
 
     /// The items that may stop the shadow rays from the query's point to the area light
     /// ([`crate::geometry::Shaft`]), where the point traces at least [`SHAFT_FROM_RAYS`]
-    /// (`rays`, an estimate) towards it and shadows are all or nothing (no object
+    /// (`rays`: the fewest the adaptive rule tests, or about what a sample covers)
+    /// towards it and shadows are all or nothing (no object
     /// transmits); `None` elsewhere or where the shaft meets too many items.
     fn shaft(&self, q: &ShadowQuery, area: &PreparedArea, rays: f64) -> Option<Occluders> {
         if rays < SHAFT_FROM_RAYS || self.scene.any_transmitting {
