@@ -190,7 +190,7 @@ pub(super) struct ShadowQuery<'l> {
     /// Where shadow rays start: off the surface, on the light's side.
     pub origin: DVec3,
     /// The interiors that side is in.
-    pub inside: InteriorStack,
+    pub inside: &'l InteriorStack,
     /// The unshadowed light colour, which POV-Ray's adaptive rule compares.
     pub colour: DVec3,
 }
@@ -255,8 +255,7 @@ impl Integrator<'_> {
         }
         let filter = memo.filter(index, facing.flipped, || {
             let side = facing.flipped.then_some(incidence.l);
-            let query = self.shadow_query(s, index, side, colour);
-            self.shadowed(&query, &incidence, sampler, counts)
+            self.side_shadow(s, (index, side), colour, &incidence, sampler, counts)
         });
         if filter == DVec3::ZERO {
             return DVec3::ZERO;
@@ -336,8 +335,7 @@ impl Integrator<'_> {
                 colour += sum
                     * memo.filter(index, flipped == 1, || {
                         let side = (flipped == 1).then_some(incidence.l);
-                        let query = self.shadow_query(s, index, side, centre);
-                        self.shadowed(&query, &incidence, sampler, counts)
+                        self.side_shadow(s, (index, side), centre, &incidence, sampler, counts)
                     });
             }
         }
@@ -375,22 +373,25 @@ impl Integrator<'_> {
     /// The shadow test towards light `index` from the viewer's side of the surface, or
     /// from the other side, towards `behind`, where the light shines on the side the
     /// shading normal does not face: its shadow ray starts on the light's side, or it would
-    /// cross the surface it leaves.
-    fn shadow_query(
+    /// cross the surface it leaves. That side's interiors are worked out only there.
+    fn side_shadow(
         &self,
         s: &Shading,
-        index: usize,
-        behind: Option<DVec3>,
+        (index, behind): (usize, Option<DVec3>),
         colour: DVec3,
-    ) -> ShadowQuery<'_> {
+        incidence: &crate::render::lights::Incidence,
+        sampler: &mut PixelSampler,
+        counts: &mut RayCounts,
+    ) -> DVec3 {
+        let beyond;
         let (origin, inside) = match behind {
             Some(l) => {
-                let origin = offset_point(s.surface.point, s.surface.normal, l);
-                (origin, super::crossing(s).2)
+                beyond = super::crossing(s).2;
+                (offset_point(s.surface.point, s.surface.normal, l), &beyond)
             }
-            None => (s.shadow_origin, s.path.interiors),
+            None => (s.shadow_origin, &s.path.interiors),
         };
-        ShadowQuery {
+        let query = ShadowQuery {
             light: &self.scene.lights[index],
             index: index as u32,
             level: s.path.block(),
@@ -398,7 +399,8 @@ impl Integrator<'_> {
             origin,
             inside,
             colour,
-        }
+        };
+        self.shadowed(&query, incidence, sampler, counts)
     }
 
     /// The fraction of the light the query's point receives (all of it from a shadowless
@@ -601,7 +603,7 @@ impl Integrator<'_> {
         });
         let hits = &mut hits[..n];
         hits.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut interiors = q.inside;
+        let mut interiors = *q.inside;
         let mut start = 0.0;
         let mut factor = DVec3::ONE;
         let ends = hits
@@ -1045,7 +1047,7 @@ mod tests {
             level: 0,
             p: DVec3::ZERO,
             origin: DVec3::ZERO,
-            inside: InteriorStack::OUTSIDE,
+            inside: &InteriorStack::OUTSIDE,
             colour: DVec3::ONE,
         };
         let mut sampler = PixelSampler::new(n);

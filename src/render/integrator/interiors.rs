@@ -70,8 +70,12 @@ impl InteriorStack {
         let mut m = *self;
         match m.ids[..m.len].iter().rposition(|&i| i == id) {
             Some(k) => {
-                m.ids.copy_within(k + 1..m.len, k);
-                m.iors.copy_within(k + 1..m.len, k);
+                // Every slot above k moves down one, those past the top too (the stack is
+                // short: a fixed loop, where `copy_within` called memmove).
+                for j in k..DEPTH - 1 {
+                    m.ids[j] = m.ids[j + 1];
+                    m.iors[j] = m.iors[j + 1];
+                }
                 let below = m.solid & ((1u8 << k) - 1);
                 m.solid = below | ((m.solid >> 1) & !((1u8 << k) - 1));
                 m.len -= 1;

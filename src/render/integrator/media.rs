@@ -277,7 +277,7 @@ impl Integrator<'_> {
                 level: at.level,
                 p,
                 origin: p,
-                inside: *at.interiors,
+                inside: at.interiors,
                 colour,
             };
             let arriving =
