@@ -111,6 +111,17 @@ struct CsgNode {
 /// hole for every ray, and every hole again for every hit.
 const INDEXED_CHILDREN: usize = 8;
 
+/// A small node's index costs a ray its set-up (the ray's reciprocals and the walk: about
+/// 50 instructions) and a box test a child (about 30), in the units of
+/// [`World::crossing_cost`].
+const INDEX_SETUP: f64 = 0.5;
+const INDEX_BOX: f64 = 0.3;
+
+/// A transformed primitive's crossings cost about three times an untransformed one's
+/// (mist's transformed boxes and cylinders: 350 instructions a child, against 80 for a
+/// box without a transform).
+const TRANSFORMED_COST: f64 = 3.0;
+
 /// A CSG node's children in a BVH of their own; its items are positions among the
 /// children. Children without a box to trust (unbounded, or holding a `bounded_by`, whose
 /// box limits rays rather than the solid) are always tested.
@@ -373,10 +384,16 @@ fn bake(shape: ShapeKind, t: &Transform) -> Option<ShapeKind> {
 
 impl World {
     fn index_csg_children(&mut self) {
-        for k in 0..self.csg.len() {
-            let index = self.child_index(&self.csg[k]);
-            self.csg[k].index = index.map(Box::new);
-            self.csg[k].windowed = self.searches_within(&self.csg[k]);
+        use rayon::prelude::*;
+        // Each node's index is its own small build (10^5 small nodes: 0.3 s on one core).
+        let found: Vec<(Option<ChildIndex>, bool)> = self
+            .csg
+            .par_iter()
+            .map(|node| (self.child_index(node), self.searches_within(node)))
+            .collect();
+        for (node, (index, windowed)) in self.csg.iter_mut().zip(found) {
+            node.index = index.map(Box::new);
+            node.windowed = windowed;
         }
     }
 
@@ -405,7 +422,7 @@ impl World {
             CsgOp::Difference if node.children[1..].iter().all(|&c| self.has_inside(c)) => 1,
             _ => return None,
         };
-        if node.children.len() <= first + INDEXED_CHILDREN {
+        if node.children.len() <= first + INDEXED_CHILDREN && !self.children_spread(node, first) {
             return None;
         }
         let positions = node.children.iter().enumerate().skip(first);
@@ -417,6 +434,60 @@ impl World {
             bvh,
             unbounded,
         })
+    }
+
+    /// Whether indexing a node of few children saves a ray more than the index costs it:
+    /// the children's boxes the ray misses, by the share of the node's box surface each
+    /// leaves uncovered (the chance that a ray meeting the node misses it), weighed by
+    /// what finding the child's crossings costs ([`World::crossing_cost`]), against the
+    /// index's own walk: [`INDEX_SETUP`] and [`INDEX_BOX`] a child.
+    fn children_spread(&self, node: &CsgNode, first: usize) -> bool {
+        let boxes: Vec<Option<Aabb>> = node
+            .children
+            .iter()
+            .map(|&c| {
+                let trusted = !self.holds_bound(c);
+                self.item_bounds(c)
+                    .filter(|b| trusted && b.is_finite() && !b.is_empty())
+            })
+            .collect();
+        // Rays reach the node through its own box: a difference's is its first child's.
+        // Where that is unbounded, the box of the bounded children stands for it (which
+        // makes a miss look less likely than it is).
+        let bounded = boxes.iter().flatten().fold(Aabb::EMPTY, |a, b| a.union(b));
+        let whole = match boxes[0] {
+            Some(b) if node.op == CsgOp::Difference => b,
+            _ => bounded,
+        };
+        let area = whole.surface_area();
+        if area.is_nan() || area <= 0.0 {
+            return false;
+        }
+        let (mut saved, mut indexed) = (0.0, 0.0);
+        for (b, &c) in boxes.iter().zip(&node.children).skip(first) {
+            if let Some(b) = b {
+                let missed = 1.0 - b.intersection(&whole).surface_area() / area;
+                saved += missed * self.crossing_cost(c);
+                indexed += 1.0;
+            }
+        }
+        saved > INDEX_SETUP + INDEX_BOX * indexed
+    }
+
+    /// What finding an item's crossings costs a ray, in units of a primitive placed
+    /// without a transform of its own (about 100 instructions: a box, 80; a sphere's
+    /// quadratic, fewer): a transformed or instanced one [`TRANSFORMED_COST`], a CSG node
+    /// its children's sum.
+    fn crossing_cost(&self, item: u32) -> f64 {
+        match decode(item) {
+            Ref::Primitive(i) if self.primitives[i].transform == NO_TRANSFORM => 1.0,
+            Ref::Primitive(_) | Ref::Instance(_) => TRANSFORMED_COST,
+            Ref::Csg(k) => self.csg[k]
+                .children
+                .iter()
+                .map(|&c| self.crossing_cost(c))
+                .sum(),
+        }
     }
 
     /// A BVH over the items with finite bounds that `trusted` accepts, its leaves holding
@@ -439,6 +510,9 @@ impl World {
             }
         }
         let bounds_of = |i: usize| self.item_bounds(bounded[i].1).unwrap_or(Aabb::EMPTY);
+        if let Some(list) = Bvh::list(bounded.iter().map(|b| b.0).collect(), bounds_of) {
+            return (list, unbounded);
+        }
         let mut bvh = Bvh::build_from(bounded.len(), bounds_of);
         for leaf in &mut bvh.items {
             *leaf = bounded[*leaf as usize].0;
@@ -1755,6 +1829,86 @@ mod tests {
         let mut hits = 0;
         for _ in 0..20_000 {
             let o = DVec3::new(next(), next(), next()) * 6.0;
+            let d = DVec3::new(next(), next(), next()).normalize_or(DVec3::Y);
+            let ray = Ray::new(o, d);
+            let a = indexed
+                .intersect(&ray, f64::INFINITY, 0)
+                .map(|h| (h.t, h.flipped));
+            let b = scanned
+                .intersect(&ray, f64::INFINITY, 0)
+                .map(|h| (h.t, h.flipped));
+            assert_eq!(a, b, "ray {ray:?}");
+            hits += usize::from(a.is_some());
+            for &item in &items {
+                assert_eq!(indexed.inside(item, o), scanned.inside(item, o), "{o}");
+            }
+        }
+        assert!(
+            hits > 5_000,
+            "{hits} hits: the test would not see a difference"
+        );
+    }
+
+    /// A node of few children is indexed where a ray that meets it mostly misses some of
+    /// their boxes and their crossings cost more than the index's box tests (a box less
+    /// three small transformed balls in its corners; a union of two apart), not where the
+    /// children fill most of the node (a box less two thick slabs through it); indexed,
+    /// each answers every ray and point as the scan of its children does.
+    #[test]
+    fn small_nodes_are_indexed_where_their_children_lie_apart() {
+        let build = || {
+            let mut b = WorldBuilder::default();
+            let cube = |b: &mut WorldBuilder, min: DVec3, max: DVec3| {
+                b.primitive(ShapeKind::Box { min, max }, &Transform::IDENTITY, 0, 0)
+            };
+            let block = cube(&mut b, DVec3::splat(-2.0), DVec3::splat(2.0));
+            let mut corners = vec![block];
+            for k in 0..3 {
+                let c = DVec3::new(
+                    [-1.8, 1.8, -1.8][k],
+                    [1.8, 1.8, -1.8][k],
+                    [1.8, -1.8, -1.8][k],
+                );
+                let squash = Transform::scale(DVec3::new(0.6, 0.4, 0.5)).unwrap();
+                let place = squash.then(&Transform::translate(c));
+                let ball = ShapeKind::Sphere {
+                    center: DVec3::ZERO,
+                    radius: 1.0,
+                };
+                corners.push(b.primitive(ball, &place, 0, 0));
+            }
+            let spread = b.csg(CsgOp::Difference, corners, false);
+            let slab = |b: &mut WorldBuilder, axis: usize| {
+                let (mut min, mut max) = (DVec3::splat(-2.1), DVec3::splat(2.1));
+                (min[axis], max[axis]) = (-1.2, 1.2);
+                cube(b, min + DVec3::X * 10.0, max + DVec3::X * 10.0)
+            };
+            let block2 = cube(
+                &mut b,
+                DVec3::new(8.0, -2.0, -2.0),
+                DVec3::new(12.0, 2.0, 2.0),
+            );
+            let (s1, s2) = (slab(&mut b, 0), slab(&mut b, 1));
+            let filled = b.csg(CsgOp::Difference, vec![block2, s1, s2], false);
+            let apart = b.csg(CsgOp::Union, vec![spread, filled], false);
+            b.add_top(apart);
+            (b.build(), [spread.0, filled.0, apart.0])
+        };
+        let (indexed, items) = build();
+        let (mut scanned, _) = build();
+        let node = |item: u32| match decode(item) {
+            Ref::Csg(k) => &indexed.csg[k],
+            _ => unreachable!(),
+        };
+        assert!(node(items[0]).index.is_some(), "the box less three balls");
+        assert!(node(items[1]).index.is_none(), "the box less two slabs");
+        assert!(node(items[2]).index.is_some(), "the union of the two");
+        scanned.csg.iter_mut().for_each(|n| n.index = None);
+        let mut uniform = crate::geometry::uniform_stream(0x94d0_49bb_1331_11ebu64);
+        let mut next = move || uniform() * 2.0 - 1.0;
+        let mut hits = 0;
+        for _ in 0..20_000 {
+            let o = DVec3::new(5.0 + next() * 9.0, next() * 3.0, next() * 3.0);
             let d = DVec3::new(next(), next(), next()).normalize_or(DVec3::Y);
             let ray = Ray::new(o, d);
             let a = indexed

@@ -34,6 +34,14 @@ pub(super) fn boxes(items: &[u32], bounds_of: impl Fn(usize) -> Aabb) -> Vec<Lis
         .collect()
 }
 
+/// A list box as a box.
+pub(super) fn own_box(&[x, y, z]: &ListBox) -> Aabb {
+    Aabb {
+        min: glam::DVec3::new(x[0], y[0], z[0]),
+        max: glam::DVec3::new(x[1], y[1], z[1]),
+    }
+}
+
 /// A ray as the list's box tests need it.
 struct ListRay {
     origin: [f64; 3],

@@ -176,17 +176,22 @@ impl Bvh {
     /// [`Bvh::build`] over `n` items whose bounds `bounds_of` gives, so the caller need not
     /// hold them all in an array beside the tree's own.
     pub fn build_from(n: usize, bounds_of: impl Fn(usize) -> Aabb + Sync) -> Bvh {
-        let mut items: Vec<BuildItem> = (0..n)
-            .into_par_iter()
-            .map(|i| {
-                let b = bounds_of(i);
-                BuildItem {
-                    bounds: NodeBox::enclosing(&b),
-                    centre: b.centre().as_vec3(),
-                    index: i as u32,
-                }
-            })
-            .collect();
+        let item = |i: usize| {
+            let b = bounds_of(i);
+            BuildItem {
+                bounds: NodeBox::enclosing(&b),
+                centre: b.centre().as_vec3(),
+                index: i as u32,
+            }
+        };
+        // A small tree's items are read on this thread: handing a CSG node's three
+        // children to the pool woke its threads for each of 10^5 such nodes (2 s of
+        // yielding, scheduled in the kernel).
+        let mut items: Vec<BuildItem> = if n >= PARALLEL_MIN_ITEMS && parallel() {
+            (0..n).into_par_iter().map(item).collect()
+        } else {
+            (0..n).map(item).collect()
+        };
         let mut tree = Binary {
             nodes: Vec::with_capacity(2 * items.len().max(1)),
             items: Vec::with_capacity(items.len()),
@@ -196,10 +201,34 @@ impl Bvh {
         }
         drop(items);
         let few = few::boxes(&tree.items, bounds_of);
-        Bvh {
+        let mut bvh = Bvh {
             few,
             ..wide::collapse(tree)
+        };
+        // A list is walked without its nodes (a small CSG node's index held a node of
+        // 128 bytes it never read).
+        if !bvh.few.is_empty() {
+            bvh.nodes = Vec::new();
         }
+        bvh
+    }
+
+    /// The items `labels` names, with boxes `bounds_of(k)` in that order, as a list walked
+    /// in that order, without a tree's build (a small CSG node's children: the build took
+    /// 6,000 instructions for three); `None` for more than a list holds.
+    pub fn list(labels: Vec<u32>, bounds_of: impl Fn(usize) -> Aabb) -> Option<Bvh> {
+        if labels.is_empty() || labels.len() > few::FEW {
+            return None;
+        }
+        let positions: Vec<u32> = (0..labels.len() as u32).collect();
+        Some(Bvh {
+            nodes: Vec::new(),
+            few: few::boxes(&positions, bounds_of),
+            positions: labels.len(),
+            items: labels,
+            positions_are_items: false,
+            depth: 0,
+        })
     }
 
     /// Builds the sequential way only (for tests and the benchmark's comparison).

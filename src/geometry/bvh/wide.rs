@@ -7,7 +7,7 @@ use std::ops::Range;
 
 use glam::DVec3;
 
-use super::{Binary, BinaryNode, Bvh, f32_down, f32_up};
+use super::{Binary, BinaryNode, Bvh, f32_down, f32_up, few};
 use crate::geometry::{Aabb, Ray};
 
 pub const WIDTH: usize = 4;
@@ -334,11 +334,11 @@ impl Bvh {
         mut t_max: f64,
         mut visit: impl FnMut(u32, f64) -> Option<f64>,
     ) {
-        if self.nodes.is_empty() {
-            return;
-        }
         if !self.few.is_empty() {
             return self.traverse_few(ray, t_max, visit);
+        }
+        if self.nodes.is_empty() {
+            return;
         }
         let r = BoxRay::new(ray);
         let mut stack = Stack::new();
@@ -389,6 +389,13 @@ impl Bvh {
     /// point.
     pub fn any_containing(&self, p: DVec3, mut test: impl FnMut(u32) -> bool) -> bool {
         let p = p.to_array();
+        if !self.few.is_empty() {
+            // A list's boxes in turn, without the walk's stack (a small CSG node's
+            // children, for each of its crossings).
+            return self.few.iter().enumerate().any(|(k, b)| {
+                (0..3).all(|a| b[a][0] <= p[a] && p[a] <= b[a][1]) && test(self.item(k))
+            });
+        }
         let holds = |node: &Node, lane: usize| {
             (0..3).all(|a| {
                 f64::from(node.bounds[0][a][lane]) <= p[a]
@@ -410,11 +417,8 @@ impl Bvh {
         mut visit: impl FnMut(u32, &Aabb) -> bool,
     ) -> bool {
         if !self.few.is_empty() {
-            return self.few.iter().enumerate().all(|(k, &[x, y, z])| {
-                let own = Aabb {
-                    min: DVec3::new(x[0], y[0], z[0]),
-                    max: DVec3::new(x[1], y[1], z[1]),
-                };
+            return self.few.iter().enumerate().all(|(k, b)| {
+                let own = few::own_box(b);
                 !meets(&own) || visit(self.item(k), &own)
             });
         }
@@ -476,6 +480,10 @@ impl Bvh {
 
     /// The box around every item (empty for an empty tree).
     pub fn bounds(&self) -> Aabb {
+        if !self.few.is_empty() {
+            return (0..self.few.len())
+                .fold(Aabb::EMPTY, |b, k| b.union(&few::own_box(&self.few[k])));
+        }
         self.nodes.first().map_or(Aabb::EMPTY, Node::aabb)
     }
 
