@@ -108,7 +108,8 @@ struct CsgNode {
 
 /// Past this many children a CSG node indexes them by their boxes, so that a ray or a
 /// point meets only the children near it: a slab with 2,500 holes otherwise tested every
-/// hole for every ray, and every hole again for every hit.
+/// hole for every ray, and every hole again for every hit. A node of fewer is indexed
+/// where its children lie apart ([`World::children_spread`]).
 const INDEXED_CHILDREN: usize = 8;
 
 /// A small node's index costs a ray its set-up (the ray's reciprocals and the walk: about
