@@ -109,7 +109,7 @@ struct CsgNode {
 /// Past this many children a CSG node indexes them by their boxes, so that a ray or a
 /// point meets only the children near it: a slab with 2,500 holes otherwise tested every
 /// hole for every ray, and every hole again for every hit. A node of fewer is indexed
-/// where its children lie apart ([`World::children_spread`]).
+/// where its children lie apart ([`World::small_index`]).
 const INDEXED_CHILDREN: usize = 8;
 
 /// A small node's index costs a ray its set-up (the ray's reciprocals and the walk: about
@@ -423,8 +423,8 @@ impl World {
             CsgOp::Difference if node.children[1..].iter().all(|&c| self.has_inside(c)) => 1,
             _ => return None,
         };
-        if node.children.len() <= first + INDEXED_CHILDREN && !self.children_spread(node, first) {
-            return None;
+        if node.children.len() <= first + INDEXED_CHILDREN {
+            return self.small_index(node, first);
         }
         let positions = node.children.iter().enumerate().skip(first);
         let (bvh, unbounded) = self.bvh_over(positions.map(|(j, &c)| (j as u32, c)), |c| {
@@ -437,12 +437,13 @@ impl World {
         })
     }
 
-    /// Whether indexing a node of few children saves a ray more than the index costs it:
-    /// the children's boxes the ray misses, by the share of the node's box surface each
-    /// leaves uncovered (the chance that a ray meeting the node misses it), weighed by
-    /// what finding the child's crossings costs ([`World::crossing_cost`]), against the
-    /// index's own walk: [`INDEX_SETUP`] and [`INDEX_BOX`] a child.
-    fn children_spread(&self, node: &CsgNode, first: usize) -> bool {
+    /// The index of a node of few children (a list of their boxes, in their order) where it
+    /// saves a ray more than it costs: the children's boxes the ray misses, by the share of
+    /// the node's box surface each leaves uncovered (the chance that a ray meeting the node
+    /// misses it), weighed by what finding the child's crossings costs
+    /// ([`World::crossing_cost`]), against the index's own walk: [`INDEX_SETUP`] and
+    /// [`INDEX_BOX`] a child.
+    fn small_index(&self, node: &CsgNode, first: usize) -> Option<ChildIndex> {
         let boxes: Vec<Option<Aabb>> = node
             .children
             .iter()
@@ -462,17 +463,30 @@ impl World {
         };
         let area = whole.surface_area();
         if area.is_nan() || area <= 0.0 {
-            return false;
+            return None;
         }
-        let (mut saved, mut indexed) = (0.0, 0.0);
-        for (b, &c) in boxes.iter().zip(&node.children).skip(first) {
-            if let Some(b) = b {
-                let missed = 1.0 - b.intersection(&whole).surface_area() / area;
-                saved += missed * self.crossing_cost(c);
-                indexed += 1.0;
+        let (mut saved, mut listed, mut labels, mut unbounded) =
+            (0.0, Vec::new(), Vec::new(), Vec::new());
+        for (j, (b, &c)) in boxes.iter().zip(&node.children).enumerate().skip(first) {
+            match b {
+                Some(b) => {
+                    let missed = 1.0 - b.intersection(&whole).surface_area() / area;
+                    saved += missed * self.crossing_cost(c);
+                    listed.push(*b);
+                    labels.push(j as u32);
+                }
+                None => unbounded.push(j as u32),
             }
         }
-        saved > INDEX_SETUP + INDEX_BOX * indexed
+        if saved <= INDEX_SETUP + INDEX_BOX * labels.len() as f64 {
+            return None;
+        }
+        let bvh = Bvh::list(labels, |k| listed[k])?;
+        Some(ChildIndex {
+            first,
+            bvh,
+            unbounded,
+        })
     }
 
     /// What finding an item's crossings costs a ray, in units of a primitive placed
