@@ -1839,11 +1839,27 @@ mod tests {
         let (mut scanned, _) = build();
         assert!(indexed.csg.iter().filter(|n| n.index.is_some()).count() == 2);
         scanned.csg.iter_mut().for_each(|n| n.index = None);
-        let mut uniform = crate::geometry::uniform_stream(0x853c_49e6_748f_ea9bu64);
+        answers_as_the_scan(&indexed, &scanned, &items, 0x853c_49e6_748f_ea9bu64, |v| {
+            v * 6.0
+        });
+    }
+
+    /// Asserts that 20,000 random rays meet the same surfaces in `indexed` as in `scanned`
+    /// (the same world with its children's indexes dropped) and that their origins
+    /// (`place` of a point in [-1, 1)^3) are inside the same items, more than 5,000 of the
+    /// rays meeting something.
+    fn answers_as_the_scan(
+        indexed: &World,
+        scanned: &World,
+        items: &[u32],
+        seed: u64,
+        place: impl Fn(DVec3) -> DVec3,
+    ) {
+        let mut uniform = crate::geometry::uniform_stream(seed);
         let mut next = move || uniform() * 2.0 - 1.0;
         let mut hits = 0;
         for _ in 0..20_000 {
-            let o = DVec3::new(next(), next(), next()) * 6.0;
+            let o = place(DVec3::new(next(), next(), next()));
             let d = DVec3::new(next(), next(), next()).normalize_or(DVec3::Y);
             let ray = Ray::new(o, d);
             let a = indexed
@@ -1854,7 +1870,7 @@ mod tests {
                 .map(|h| (h.t, h.flipped));
             assert_eq!(a, b, "ray {ray:?}");
             hits += usize::from(a.is_some());
-            for &item in &items {
+            for &item in items {
                 assert_eq!(indexed.inside(item, o), scanned.inside(item, o), "{o}");
             }
         }
@@ -1919,29 +1935,9 @@ mod tests {
         assert!(node(items[1]).index.is_none(), "the box less two slabs");
         assert!(node(items[2]).index.is_some(), "the union of the two");
         scanned.csg.iter_mut().for_each(|n| n.index = None);
-        let mut uniform = crate::geometry::uniform_stream(0x94d0_49bb_1331_11ebu64);
-        let mut next = move || uniform() * 2.0 - 1.0;
-        let mut hits = 0;
-        for _ in 0..20_000 {
-            let o = DVec3::new(5.0 + next() * 9.0, next() * 3.0, next() * 3.0);
-            let d = DVec3::new(next(), next(), next()).normalize_or(DVec3::Y);
-            let ray = Ray::new(o, d);
-            let a = indexed
-                .intersect(&ray, f64::INFINITY, 0)
-                .map(|h| (h.t, h.flipped));
-            let b = scanned
-                .intersect(&ray, f64::INFINITY, 0)
-                .map(|h| (h.t, h.flipped));
-            assert_eq!(a, b, "ray {ray:?}");
-            hits += usize::from(a.is_some());
-            for &item in &items {
-                assert_eq!(indexed.inside(item, o), scanned.inside(item, o), "{o}");
-            }
-        }
-        assert!(
-            hits > 5_000,
-            "{hits} hits: the test would not see a difference"
-        );
+        answers_as_the_scan(&indexed, &scanned, &items, 0x94d0_49bb_1331_11ebu64, |v| {
+            DVec3::new(5.0 + v.x * 9.0, v.y * 3.0, v.z * 3.0)
+        });
     }
 
     /// Boxes sharing their top face (advanced/pawns' 32 squares set into the board): rays
