@@ -10,6 +10,7 @@
 //! tile rises to its edge from a single centre point); no code of POV-Ray's was read.
 
 use glam::{DVec2, DVec3};
+use std::sync::OnceLock;
 
 mod corners;
 mod pavements;
@@ -44,14 +45,16 @@ struct Tiling {
     grid: &'static [[f64; 2]],
 }
 
-/// The tilings penumbra has measured, by POV-Ray's number.
-fn table(n: u8) -> Option<&'static Tiling> {
-    TILINGS.iter().find(|(k, _)| *k == n).map(|(_, t)| t)
+/// The tilings penumbra has measured, by POV-Ray's number, each with its lookup grid.
+fn table(n: u8) -> Option<Indexed> {
+    static GRIDS: [OnceLock<Grid>; TILINGS.len()] = [const { OnceLock::new() }; TILINGS.len()];
+    let i = TILINGS.iter().position(|(k, _)| *k == n)?;
+    Some(Indexed::new(&TILINGS[i].1, &GRIDS[i]))
 }
 
 /// Whether `tiling n` is modelled (the language refuses the others by name).
 pub fn supported(n: u8) -> bool {
-    table(n).is_some() || aperiodic(n).is_some()
+    TILINGS.iter().any(|(k, _)| *k == n) || aperiodic(n).is_some()
 }
 
 /// The aperiodic tilings: Penrose's first (src/appearance/tiling/pentagons.rs), and his
@@ -71,11 +74,11 @@ fn aperiodic(n: u8) -> Option<Aperiodic> {
 }
 
 /// The pavement measured for a choice of polyform, if penumbra has it.
-fn pavement(v: &crate::scene::Pavement) -> Option<&'static Tiling> {
-    PAVEMENTS
-        .iter()
-        .find(|(k, _)| *k == (v.sides, v.tiles, v.pattern))
-        .map(|(_, t)| t)
+fn pavement(v: &crate::scene::Pavement) -> Option<Indexed> {
+    static GRIDS: [OnceLock<Grid>; PAVEMENTS.len()] = [const { OnceLock::new() }; PAVEMENTS.len()];
+    let key = (v.sides, v.tiles, v.pattern);
+    let i = PAVEMENTS.iter().position(|(k, _)| *k == key)?;
+    Some(Indexed::new(&PAVEMENTS[i].1, &GRIDS[i]))
 }
 
 /// How many arrangements POV-Ray has of `tiles` basic polygons of `sides` sides (POV-Ray's
@@ -103,7 +106,7 @@ pub fn pavement_value(v: &crate::scene::Pavement, p: DVec3) -> f64 {
     }
     locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |found| {
         let plain_rise = 1.0 - found.depth;
-        corners::styled_rise(v, t, found.tile, found.local, plain_rise).max(BODY)
+        corners::styled_rise(v, t.tiling, found.tile, found.local, plain_rise).max(BODY)
     })
 }
 
@@ -119,10 +122,10 @@ pub fn tiling_value(n: u8, p: DVec3) -> f64 {
 }
 
 /// A tiling's value: the tile's type, raised by the bevel near its edge.
-fn bevelled(t: &Tiling, p: DVec3) -> f64 {
+fn bevelled(t: Indexed, p: DVec3) -> f64 {
     locate(t, DVec2::new(p.x, p.z)).map_or(0.0, |found| {
         let rise = (1.0 - found.depth).max(BODY);
-        (f64::from(found.tile.kind) + rise) / f64::from(t.types)
+        (f64::from(found.tile.kind) + rise) / f64::from(t.tiling.types)
     })
 }
 
@@ -141,26 +144,128 @@ struct Found<'a> {
     depth: f64,
 }
 
-fn locate(t: &Tiling, q: DVec2) -> Option<Found<'_>> {
-    let (a, b) = (DVec2::from(t.a), DVec2::from(t.b));
+fn locate(t: Indexed, q: DVec2) -> Option<Found<'static>> {
+    let (a, b) = (DVec2::from(t.tiling.a), DVec2::from(t.tiling.b));
     let det = a.perp_dot(b);
-    let u = (q.perp_dot(b) / det).floor();
-    let v = (a.perp_dot(q) / det).floor();
-    // The cell's polygons may reach past the parallelogram spanned by a and b, so the
-    // point is looked for in the neighbouring cells' copies too, nearest cells first.
-    for (di, dj) in NEIGHBOURS {
-        let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
-        for tile in t.tiles {
-            if let Some(depth) = depth_in(tile, t, local) {
-                return Some(Found { tile, local, depth });
-            }
+    let (u, v) = (q.perp_dot(b) / det, a.perp_dot(q) / det);
+    let (cell_u, cell_v) = (u.floor(), v.floor());
+    for &(k, i) in t.grid.candidates(u - cell_u, v - cell_v) {
+        let (di, dj) = NEIGHBOURS[usize::from(k)];
+        let local = q - a * (cell_u + f64::from(di)) - b * (cell_v + f64::from(dj));
+        let tile = &t.tiling.tiles[usize::from(i)];
+        if let Some(depth) = depth_in(tile, t.tiling, local) {
+            return Some(Found { tile, local, depth });
         }
     }
     None
 }
 
-/// The 5 x 5 cells round a point's own, ring by ring: tiles do not overlap, so the order
-/// only decides how soon the tile is found (most points lie in their own cell's copy).
+/// A tiling's table and its lookup grid.
+#[derive(Clone, Copy)]
+struct Indexed {
+    tiling: &'static Tiling,
+    grid: &'static Grid,
+}
+
+impl Indexed {
+    fn new(tiling: &'static Tiling, grid: &'static OnceLock<Grid>) -> Self {
+        let grid = grid.get_or_init(|| Grid::new(tiling));
+        Self { tiling, grid }
+    }
+}
+
+/// Which tile copies of the cells round a point's own can hold it, by where the point lies
+/// in its cell: the cell's parallelogram cut into `GRID` x `GRID` bins, each listing the
+/// (neighbour, tile) pairs whose polygon's box in cell coordinates meets the bin, in the
+/// order the search of every neighbour's every tile would try them. A point is found in
+/// the same tile as by that search, having tested a few polygons instead of up to 25
+/// cells' worth (textures/patterns/tiling: about 900 instructions a point).
+struct Grid {
+    /// Where each bin's candidates start in `candidates`, with the end after the last bin.
+    starts: Vec<u32>,
+    candidates: Vec<(u8, u8)>,
+}
+
+const GRID: usize = 16;
+
+/// How far past a bin a polygon's box may reach and still be listed: a point's own cell
+/// coordinates and its tile-local ones are rounded apart by far less.
+const GRID_MARGIN: f64 = 1e-6;
+
+impl Grid {
+    fn new(t: &Tiling) -> Self {
+        let boxes = cell_boxes(t);
+        let mut starts = Vec::with_capacity(GRID * GRID + 1);
+        let mut candidates = Vec::new();
+        let bin = |i: usize| (i as f64 / GRID as f64, (i + 1) as f64 / GRID as f64);
+        for i in 0..GRID {
+            for j in 0..GRID {
+                starts.push(candidates.len() as u32);
+                let (u, v) = (bin(i), bin(j));
+                let met = boxes.iter().filter(|b| b.meets(u, v));
+                candidates.extend(met.map(|b| b.key));
+            }
+        }
+        starts.push(candidates.len() as u32);
+        Self { starts, candidates }
+    }
+
+    /// The candidates for a point at (`u`, `v`) in its cell, each coordinate in [0, 1].
+    fn candidates(&self, u: f64, v: f64) -> &[(u8, u8)] {
+        let index = |x: f64| ((x * GRID as f64) as usize).min(GRID - 1);
+        let bin = index(u) * GRID + index(v);
+        &self.candidates[self.starts[bin] as usize..self.starts[bin + 1] as usize]
+    }
+}
+
+/// One neighbour's copy of one tile, (neighbour, tile), with the copy's box in the
+/// coordinates of the point's own cell (the lattice vectors a and b as units).
+struct CellBox {
+    key: (u8, u8),
+    lo: DVec2,
+    hi: DVec2,
+}
+
+impl CellBox {
+    /// Whether the box meets the bin spanning `u` and `v` (each a low and a high bound).
+    fn meets(&self, u: (f64, f64), v: (f64, f64)) -> bool {
+        self.lo.x <= u.1 + GRID_MARGIN
+            && self.hi.x >= u.0 - GRID_MARGIN
+            && self.lo.y <= v.1 + GRID_MARGIN
+            && self.hi.y >= v.0 - GRID_MARGIN
+    }
+}
+
+/// Every neighbour's copy of every tile, in search order.
+fn cell_boxes(t: &Tiling) -> Vec<CellBox> {
+    let (a, b) = (DVec2::from(t.a), DVec2::from(t.b));
+    let det = a.perp_dot(b);
+    let in_cell = |w: &[f64; 2]| {
+        let w = DVec2::from(*w);
+        DVec2::new(w.perp_dot(b) / det, a.perp_dot(w) / det)
+    };
+    let mut boxes = Vec::new();
+    for (k, &(di, dj)) in NEIGHBOURS.iter().enumerate() {
+        let offset = DVec2::new(f64::from(di), f64::from(dj));
+        for (i, tile) in t.tiles.iter().enumerate() {
+            let corners = tile.vertices.iter().map(in_cell);
+            let lo = corners.clone().fold(DVec2::INFINITY, DVec2::min) + offset;
+            let hi = corners.fold(DVec2::NEG_INFINITY, DVec2::max) + offset;
+            boxes.push(CellBox {
+                key: (k as u8, i as u8),
+                lo,
+                hi,
+            });
+        }
+    }
+    boxes
+}
+
+/// The 5 x 5 cells round a point's own, ring by ring: the cell's polygons may reach past
+/// the parallelogram spanned by its lattice vectors, so a point may lie in a neighbouring
+/// cell's copy of a tile. Tiles do not overlap, so the order only decides how soon the tile
+/// is found (most points lie in their own cell's copy) and which of two tiles a point on
+/// their shared edge takes.
 const NEIGHBOURS: [(i8, i8); 25] = [
     (0, 0),
     (-1, 0),
@@ -196,22 +301,21 @@ fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
     if !inside(vertices, q) {
         return None;
     }
-    let mut nearest = f64::INFINITY;
-    let n = vertices.len();
     // Only pavements look for reflex corners; tilings' tiles are convex.
     let turn = if t.grid.is_empty() {
         0.0
     } else {
         orientation(vertices)
     };
-    for i in 0..n {
-        let s = DVec2::from(vertices[i]);
-        let e = DVec2::from(vertices[(i + 1) % n]);
+    let mut nearest = f64::INFINITY;
+    let mut before = DVec2::from(vertices[vertices.len() - 1]);
+    for (i, &s) in vertices.iter().enumerate() {
+        let s = DVec2::from(s);
+        let e = DVec2::from(*vertices.get(i + 1).unwrap_or(&vertices[0]));
         let edge = e - s;
         let width = tile.edge_bevels.get(i).copied().unwrap_or(t.bevel);
         nearest = nearest.min(segment_distance(q, s, e) / width);
-        let before = s - DVec2::from(vertices[(i + n - 1) % n]);
-        if before.perp_dot(edge) * turn < 0.0 {
+        if turn != 0.0 && (s - before).perp_dot(edge) * turn < 0.0 {
             let p = q - s;
             let corner = t
                 .grid
@@ -220,20 +324,21 @@ fn depth_in(tile: &Tile, t: &Tiling, q: DVec2) -> Option<f64> {
                 .fold(0.0, f64::max);
             nearest = nearest.min(corner / t.bevel);
         }
+        before = s;
     }
     Some(nearest)
 }
 
 /// Whether `q` lies inside the polygon (by the crossings of a ray along +x).
 fn inside(vertices: &[[f64; 2]], q: DVec2) -> bool {
-    let n = vertices.len();
     let mut inside = false;
-    for i in 0..n {
-        let s = DVec2::from(vertices[i]);
-        let e = DVec2::from(vertices[(i + 1) % n]);
+    let mut s = DVec2::from(vertices[vertices.len() - 1]);
+    for &e in vertices {
+        let e = DVec2::from(e);
         if (s.y > q.y) != (e.y > q.y) && q.x < s.x + (q.y - s.y) * (e.x - s.x) / (e.y - s.y) {
             inside = !inside;
         }
+        s = e;
     }
     inside
 }
@@ -262,20 +367,77 @@ mod tests {
         tiling_value(n, DVec3::new(x, 7.0, z))
     }
 
+    /// Every periodic tiling and pavement with its lookup grid.
+    pub(super) fn every_table() -> Vec<(String, Indexed)> {
+        let tilings = TILINGS
+            .iter()
+            .map(|(n, _)| (format!("tiling {n}"), table(*n).unwrap()));
+        let pavements = PAVEMENTS.iter().map(|&((sides, tiles, pattern), _)| {
+            let v = crate::scene::Pavement {
+                sides,
+                tiles,
+                pattern,
+                ..Default::default()
+            };
+            (
+                format!("pavement {sides} {tiles} {pattern}"),
+                pavement(&v).unwrap(),
+            )
+        });
+        tilings.chain(pavements).collect()
+    }
+
     #[test]
     fn every_point_lies_in_a_tile_of_every_tiling() {
-        let all = TILINGS.iter().map(|(n, t)| (format!("tiling {n}"), t));
-        let pavements = PAVEMENTS
-            .iter()
-            .map(|(k, t)| (format!("pavement {k:?}"), t));
-        for (n, t) in all.chain(pavements) {
+        for (n, t) in every_table() {
             for i in 0..2000 {
                 let x = f64::from(i % 40) * 0.731 - 17.0;
                 let z = f64::from(i / 40) * 0.593 - 15.0;
                 let found = locate(t, DVec2::new(x, z)).map(|f| (f.tile.kind, f.depth));
-                assert!(found.is_some(), "tiling {n} has a gap at ({x}, {z})");
+                assert!(found.is_some(), "{n} has a gap at ({x}, {z})");
                 let (kind, d) = found.unwrap();
-                assert!(kind < t.types && d >= 0.0, "tiling {n} at ({x}, {z})");
+                assert!(kind < t.tiling.types && d >= 0.0, "{n} at ({x}, {z})");
+            }
+        }
+    }
+
+    /// The search the grid replaces: every tile of the 5 x 5 cells round the point's own.
+    fn search_every_cell(t: &Tiling, q: DVec2) -> Option<Found<'_>> {
+        let (a, b) = (DVec2::from(t.a), DVec2::from(t.b));
+        let det = a.perp_dot(b);
+        let u = (q.perp_dot(b) / det).floor();
+        let v = (a.perp_dot(q) / det).floor();
+        for (di, dj) in NEIGHBOURS {
+            let local = q - a * (u + f64::from(di)) - b * (v + f64::from(dj));
+            for tile in t.tiles {
+                if let Some(depth) = depth_in(tile, t, local) {
+                    return Some(Found { tile, local, depth });
+                }
+            }
+        }
+        None
+    }
+
+    #[test]
+    fn the_grid_finds_the_tile_every_cell_s_search_finds() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_pcg::Pcg64::seed_from_u64(16);
+        for (n, t) in every_table() {
+            // Points anywhere, and points on the cell's lattice and its tiles' corners,
+            // where a point lies on several polygons' edges and the first found decides.
+            let corners = t.tiling.tiles.iter().flat_map(|tile| tile.vertices);
+            let mut points: Vec<DVec2> = corners.map(|&w| DVec2::from(w)).collect();
+            for _ in 0..3000 {
+                let scale = [1.0, 10.0, 1e4][rng.random_range(0..3)];
+                let x = rng.random_range(-scale..scale);
+                points.push(DVec2::new(x, rng.random_range(-scale..scale)));
+            }
+            for q in points {
+                let key = |f: Option<Found>| {
+                    f.map(|f| (std::ptr::from_ref(f.tile), f.local.to_array(), f.depth))
+                };
+                let found = key(locate(t, q));
+                assert_eq!(found, key(search_every_cell(t.tiling, q)), "{n} at {q}");
             }
         }
     }
