@@ -24,6 +24,9 @@ pub struct Superellipsoid {
     inverse: (f64, f64),
     /// p_z / p.
     ratio: f64,
+    /// Whether neither p_z nor p_z / p is one of [`power`]'s exact exponents, so that
+    /// the radial power is best found as one `exp2` of a sum of logarithms.
+    logarithmic: bool,
 }
 
 /// How close to its origin (in the unit cube's units) a ray ignores the surface: the ray
@@ -47,6 +50,7 @@ impl Superellipsoid {
             p_z,
             inverse: (1.0 / p, 1.0 / p_z),
             ratio: p_z / p,
+            logarithmic: !exact_power(p_z) && !exact_power(p_z / p),
         }
     }
 
@@ -80,13 +84,17 @@ impl Superellipsoid {
     }
 
     /// (|x|^p + |y|^p)^(p_z / p) = m^p_z (1 + w)^(p_z / p) ([`Superellipsoid::planar`]),
-    /// and w: two powers after w, side by side (m's power does not wait for w's; three
-    /// powers one after another took a quarter more time). Past p_z / p = 64 the second
-    /// could overflow where the first underflows, so r = m (1 + w)^(1/p) comes first.
+    /// and w: one `exp2` of p_z log2 m + (p_z / p) log2 (1 + w), which neither overflows
+    /// nor underflows on the way. Where an exponent is exact, two powers after w, side by
+    /// side (m's power does not wait for w's; three powers one after another took a
+    /// quarter more time); past p_z / p = 64 the second could overflow where the first
+    /// underflows, so r = m (1 + w)^(1/p) comes first.
     #[inline]
     fn radial_power(&self, q: DVec3) -> (f64, f64) {
         let (m, w) = self.planar(q);
-        let rp = if self.ratio <= 64.0 {
+        let rp = if self.logarithmic {
+            (self.p_z * m.log2() + self.ratio * (1.0 + w).log2()).exp2()
+        } else if self.ratio <= 64.0 {
             power(m, self.p_z) * power(1.0 + w, self.ratio)
         } else {
             power(m * power(1.0 + w, self.inverse.0), self.p_z)
@@ -410,7 +418,10 @@ fn root_tolerance(a: f64, b: f64) -> f64 {
 }
 
 /// `x^e` for x >= 0, without `powf` where e is 1, 2 or 1/2 (a sphere's and the pinched
-/// shapes' bounding hull's exponents and their inverses).
+/// shapes' bounding hull's exponents and their inverses). Otherwise 2^(e log2 x): `powf`
+/// took 240 instructions (glibc 2.36) and `log2` and `exp2` together 90, for a relative
+/// error of about |e log2 x| 2^-52 (1e-14 where the power is 10^-30), far below what
+/// the roots are found to.
 #[inline]
 fn power(x: f64, e: f64) -> f64 {
     if e == 1.0 {
@@ -420,8 +431,13 @@ fn power(x: f64, e: f64) -> f64 {
     } else if e == 0.5 {
         x.sqrt()
     } else {
-        x.powf(e)
+        (e * x.log2()).exp2()
     }
+}
+
+/// Whether [`power`] takes `x^e` exactly, without logarithms.
+fn exact_power(e: f64) -> bool {
+    e == 1.0 || e == 2.0 || e == 0.5
 }
 
 /// The root of g in [a, b] where g changes sign (g(a) = ga, g(b) = gb): regula falsi with
