@@ -9,6 +9,7 @@ mod isosurface;
 mod julia;
 mod mesh;
 mod poly;
+mod polytope;
 mod prism;
 mod profile;
 mod ray;

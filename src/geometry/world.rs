@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 
+use super::polytope::{HalfSpace, polytope_extent};
 use super::{
     Aabb, Bvh, LineInside, Ray, ShapeKind, ShapeTables, Transform, plane_hit, sphere_first_hit,
 };
@@ -687,11 +688,54 @@ impl World {
                     .flatten();
                 bounds.unwrap_or(own)
             }
-            // Each child limits the whole.
+            // Each child limits the whole, turned planes by the polytope they make.
             CsgOp::Intersection | CsgOp::Clip => {
-                children.fold(Aabb::INFINITE, |acc, b| acc.intersection(&b))
+                let boxed = children.fold(Aabb::INFINITE, |acc, b| acc.intersection(&b));
+                self.cut_by_half_spaces(node, boxed)
             }
         }
+    }
+
+    /// The part of an intersection's or a clip's box inside its plane children's
+    /// half-spaces (a clip's clipped plane too: its surface lies on its half-space's
+    /// side), where one of them is turned off the axes (an axis-aligned one's half-space
+    /// is its extent already).
+    fn cut_by_half_spaces(&self, node: &CsgNode, boxed: Aabb) -> Aabb {
+        let half_spaces: Vec<HalfSpace> = node
+            .children
+            .iter()
+            .filter_map(|&c| match decode(c) {
+                Ref::Primitive(i) => self.half_space(&self.primitives[i]),
+                _ => None,
+            })
+            .collect();
+        let turned = |h: &HalfSpace| h.normal.abs().max_element() < 1.0;
+        if !half_spaces.iter().any(turned) {
+            return boxed;
+        }
+        polytope_extent(&half_spaces, boxed)
+    }
+
+    /// A plane primitive's solid in world space.
+    fn half_space(&self, p: &Primitive) -> Option<HalfSpace> {
+        let ShapeKind::Plane { normal, distance } = p.shape else {
+            return None;
+        };
+        let (normal, distance) = match p.transform {
+            NO_TRANSFORM => (normal, distance),
+            t => {
+                let t = &self.transforms[t as usize];
+                let on = t.point(normal * (distance / normal.length_squared()));
+                let n = t.normal(normal);
+                (n, n.dot(on))
+            }
+        };
+        let h = HalfSpace::new(normal, distance);
+        Some(if p.flags & flags::INVERSE != 0 {
+            h.flipped()
+        } else {
+            h
+        })
     }
 
     fn primitive_extent(&self, p: &Primitive) -> Aabb {
