@@ -718,17 +718,12 @@ impl World {
 
     /// A plane primitive's solid in world space.
     fn half_space(&self, p: &Primitive) -> Option<HalfSpace> {
-        let ShapeKind::Plane { normal, distance } = p.shape else {
-            return None;
+        let world = match p.transform {
+            NO_TRANSFORM => p.shape,
+            t => bake(p.shape, &self.transforms[t as usize])?,
         };
-        let (normal, distance) = match p.transform {
-            NO_TRANSFORM => (normal, distance),
-            t => {
-                let t = &self.transforms[t as usize];
-                let on = t.point(normal * (distance / normal.length_squared()));
-                let n = t.normal(normal);
-                (n, n.dot(on))
-            }
+        let ShapeKind::Plane { normal, distance } = world else {
+            return None;
         };
         let h = HalfSpace::new(normal, distance);
         Some(if p.flags & flags::INVERSE != 0 {
