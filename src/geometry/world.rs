@@ -218,6 +218,11 @@ pub struct World {
     transforms: Vec<Transform>,
     tables: ShapeTables,
     csg: Vec<CsgNode>,
+    /// Each CSG node's extent ([`World::item_extent`]), found once at the build: the box
+    /// of an intersection of turned planes takes a search of their vertices (about 120,000
+    /// instructions for a dodecahedron's twelve), and the builds ask for a node's extent
+    /// several times (the tree's items, its parent's).
+    csg_extents: Vec<Aabb>,
     bvh: Bvh,
     unbounded: Vec<u32>,
     /// The unbounded items' extents (infinite on some sides), for shafts
@@ -305,6 +310,7 @@ impl WorldBuilder {
             transforms: self.transforms,
             tables: self.tables,
             csg: self.csg,
+            csg_extents: Vec::new(),
             bvh: Bvh::default(),
             unbounded: Vec::new(),
             unbounded_extents: Vec::new(),
@@ -312,6 +318,12 @@ impl WorldBuilder {
             photon_targets: Vec::new(),
             instances: self.instances,
         };
+        // In the builder's order, so that a node's children are found in the table.
+        world.csg_extents = Vec::with_capacity(world.csg.len());
+        for k in 0..world.csg.len() {
+            let extent = world.csg_extent(&world.csg[k]);
+            world.csg_extents.push(extent);
+        }
         world.index_csg_children();
         world.photon_targets = self
             .targets
@@ -620,6 +632,7 @@ impl World {
         self.primitives.capacity() * size_of::<Primitive>()
             + self.transforms.capacity() * size_of::<Transform>()
             + self.csg.capacity() * size_of::<CsgNode>()
+            + self.csg_extents.capacity() * size_of::<Aabb>()
             + self
                 .csg
                 .iter()
@@ -661,11 +674,18 @@ impl World {
     /// The box around an item's solid, its sides infinite where the solid is unbounded
     /// that way: an intersection or a clip of unbounded children can be bounded.
     fn item_extent(&self, item: u32) -> Aabb {
-        let node = match decode(item) {
-            Ref::Primitive(i) => return self.primitive_extent(&self.primitives[i]),
-            Ref::Instance(k) => return self.instances[k].bounds().unwrap_or(Aabb::INFINITE),
-            Ref::Csg(k) => &self.csg[k],
-        };
+        match decode(item) {
+            Ref::Primitive(i) => self.primitive_extent(&self.primitives[i]),
+            Ref::Instance(k) => self.instances[k].bounds().unwrap_or(Aabb::INFINITE),
+            Ref::Csg(k) => match self.csg_extents.get(k) {
+                Some(&extent) => extent,
+                None => self.csg_extent(&self.csg[k]),
+            },
+        }
+    }
+
+    /// [`World::item_extent`] of a CSG node, from its children's.
+    fn csg_extent(&self, node: &CsgNode) -> Aabb {
         if node.inverse {
             return Aabb::INFINITE;
         }
@@ -1916,6 +1936,51 @@ mod tests {
         assert!(
             hits > 5_000,
             "{hits} hits: the test would not see a difference"
+        );
+    }
+
+    /// An intersection of turned planes (thingy.inc's pyramid: six planes tilted and
+    /// turned about y, an inverted floor) is bounded by its polytope's box and goes into
+    /// the tree: it was unbounded, and every ray in the scene tested it (no_image).
+    #[test]
+    fn an_intersection_of_turned_planes_is_bounded_by_its_polytope() {
+        let mut b = WorldBuilder::default();
+        let plane = ShapeKind::Plane {
+            normal: DVec3::X,
+            distance: 0.0,
+        };
+        // Tilted back by atan(1/2) from the vertical and pushed out by 1: the side of a
+        // pyramid of height 2 and apothem 1.
+        let tilt = 1f64.atan2(2.0).to_degrees();
+        let mut sides: Vec<Item> = (0..6)
+            .map(|k| {
+                let place = Transform::rotate(DVec3::new(0.0, 0.0, tilt))
+                    .then(&Transform::translate(DVec3::X))
+                    .then(&Transform::rotate(DVec3::new(
+                        0.0,
+                        60.0 * f64::from(k),
+                        0.0,
+                    )));
+                b.primitive(plane, &place, 0, 0)
+            })
+            .collect();
+        let floor = ShapeKind::Plane {
+            normal: DVec3::Y,
+            distance: 0.0,
+        };
+        sides.push(b.primitive(floor, &Transform::IDENTITY, 0, flags::INVERSE));
+        let pyramid = b.csg(CsgOp::Intersection, sides, false);
+        b.add_top(pyramid);
+        let world = b.build();
+        assert!(world.unbounded.is_empty(), "the pyramid is in the tree");
+        let extent = world.item_extent(pyramid.0);
+        // The base's sides face along x, so its corners lie 2 / sqrt 3 out along z.
+        let corner = 2.0 / 3f64.sqrt();
+        let expected = Aabb::new(DVec3::new(-1.0, 0.0, -corner), DVec3::new(1.0, 2.0, corner));
+        assert!(
+            (extent.min - expected.min).abs().max_element() < 1e-9
+                && (extent.max - expected.max).abs().max_element() < 1e-9,
+            "{extent:?}"
         );
     }
 
