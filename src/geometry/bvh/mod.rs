@@ -231,6 +231,12 @@ impl Bvh {
         })
     }
 
+    /// Whether the tree is walked as a list of its items' own boxes (so a visited item's
+    /// box has been met).
+    pub fn walks_as_list(&self) -> bool {
+        !self.few.is_empty()
+    }
+
     /// Builds the sequential way only (for tests and the benchmark's comparison).
     pub fn build_sequential(bounds: &[Aabb]) -> Bvh {
         PARALLEL.with(|p| p.set(false));
