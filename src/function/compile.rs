@@ -234,12 +234,19 @@ impl Emitter {
             }
             Expr::Call(p, args) => {
                 let (a, d) = self.consecutive(args)?;
-                self.calls.push(p.clone());
-                (Op::Call(self.calls.len() as u32 - 1, a, d), d)
+                match p.wrapped_internal() {
+                    // functions.inc's declarations: the internal function without the
+                    // frame of a call (stackergold's rounded boxes, a sixth of its render).
+                    Some(f) => (Op::Internal(f, a, f.arity() as u8, d), d),
+                    None => {
+                        self.calls.push(p.clone());
+                        (Op::Call(self.calls.len() as u32 - 1, a, d), d)
+                    }
+                }
             }
             Expr::Internal(f, args) => {
                 let (a, d) = self.consecutive(args)?;
-                (Op::Internal(*f, a, d), d)
+                (Op::Internal(*f, a, f.arity() as u8, d), d)
             }
             Expr::Pattern(p, args) => {
                 let (a, d) = self.consecutive(args)?;

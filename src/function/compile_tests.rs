@@ -1,6 +1,7 @@
 //! The compiler's fused operations and slot layout give what the plain expression gives.
 
 use super::*;
+use std::sync::Arc;
 
 fn arg(i: u8) -> Box<Expr> {
     Box::new(Expr::Arg(i))
@@ -80,4 +81,39 @@ fn programs_with_calls_run_in_the_general_loop() {
     let p = compile(&e, 3).expect("compiles");
     assert!(!p.arithmetic);
     assert_eq!(p.at(glam::DVec3::new(2.0, 3.0, 6.0)), 7.0);
+}
+
+#[test]
+fn a_call_of_a_declared_internal_function_is_the_internal_function() {
+    // functions.inc's `f_rounded_box = function { internal(60) }`, called with x, y, z and
+    // four constants: the call becomes the internal function's operation, with the value
+    // the call gave, bit for bit; a function that does more than pass its arguments on
+    // stays a call.
+    let rounded_box = Internal::numbered(60).expect("internal 60");
+    let n = rounded_box.arity() as u8;
+    let wrapper = |args: Vec<Expr>| {
+        Arc::new(compile(&Expr::Internal(rounded_box, args), n.into()).expect("compiles"))
+    };
+    let plain = wrapper((0..n).map(Expr::Arg).collect());
+    let swapped = wrapper([1, 0].into_iter().chain(2..n).map(Expr::Arg).collect());
+    assert_eq!(plain.wrapped_internal(), Some(rounded_box));
+    assert_eq!(swapped.wrapped_internal(), None);
+    let consts = [0.05, 0.5, 0.4, 0.3].map(Expr::Const);
+    let call = |p: &Arc<Program>| {
+        let args = (0..3)
+            .map(Expr::Arg)
+            .chain(consts.iter().cloned())
+            .collect();
+        compile(&Expr::Call(p.clone(), args), 3).expect("compiles")
+    };
+    let (direct, called) = (call(&plain), call(&swapped));
+    assert!(direct.calls.is_empty() && called.calls.len() == 1);
+    let mut next = crate::geometry::uniform_stream(0x7e57_ca11);
+    for _ in 0..1000 {
+        let p = glam::DVec3::new(next(), next(), next()) - 0.5;
+        let want = rounded_box.eval(&[p.x, p.y, p.z, 0.05, 0.5, 0.4, 0.3]);
+        assert_eq!(direct.at(p).to_bits(), want.to_bits(), "at {p}");
+        let swapped_want = rounded_box.eval(&[p.y, p.x, p.z, 0.05, 0.5, 0.4, 0.3]);
+        assert_eq!(called.at(p).to_bits(), swapped_want.to_bits(), "at {p}");
+    }
 }

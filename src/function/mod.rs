@@ -167,7 +167,9 @@ enum Op {
     Select4([u8; 4], u8),
     /// Callee, first of its consecutive argument slots, result.
     Call(u32, u8, u8),
-    Internal(Internal, u8, u8),
+    /// The function, its first argument's slot, its arity (found once: its table is
+    /// searched for it), result.
+    Internal(Internal, u8, u8, u8),
     /// Pattern, first of the x, y, z slots, result.
     Pattern(u32, u8, u8),
     Pigment(u32, Channel, u8, u8),
@@ -216,6 +218,24 @@ impl Program {
             (32, _) => self.run::<32, true>(args),
             _ => self.run::<MAX_SLOTS, true>(args),
         }
+    }
+
+    /// The internal function this one is, where it only passes its arguments on in order
+    /// (`function { internal(n) }`: each argument copied to the call's slots, then the
+    /// call), so that a caller can call it directly with the same values.
+    pub(crate) fn wrapped_internal(&self) -> Option<Internal> {
+        let (Op::Internal(f, first, _, d), copies) = self.code.split_last()? else {
+            return None;
+        };
+        let n = usize::from(self.arity);
+        let passed = copies.len() == n
+            && f.arity() == n
+            && *d == self.result
+            && copies.iter().enumerate().all(|(k, op)| {
+                matches!(*op, Op::Copy(a, b)
+                    if usize::from(a) == k && usize::from(b) == usize::from(*first) + k)
+            });
+        passed.then_some(*f)
     }
 
     /// The value at a point, for isosurfaces and function patterns (x, y, z first).
@@ -331,9 +351,9 @@ impl Program {
                 let v = callee.eval(&s[a..a + usize::from(callee.arity)]);
                 w(s, d, v);
             }
-            Op::Internal(f, a, d) => {
+            Op::Internal(f, a, n, d) => {
                 let a = usize::from(a);
-                let v = f.eval(&s[a..a + f.arity()]);
+                let v = f.eval(&s[a..a + usize::from(n)]);
                 w(s, d, v);
             }
             Op::Pattern(i, a, d) => {
