@@ -236,7 +236,7 @@ impl Emitter {
                 let (a, d) = self.consecutive(args)?;
                 match p.wrapped_internal() {
                     // functions.inc's declarations: the internal function without the
-                    // frame of a call (stackergold's rounded boxes, a sixth of its render).
+                    // frame of a call (stackergold's rounded boxes: a quarter of its instructions).
                     Some(f) => (Op::Internal(f, a, f.arity() as u8, d), d),
                     None => {
                         self.calls.push(p.clone());

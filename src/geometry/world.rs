@@ -1529,8 +1529,6 @@ mod tests {
         }
     }
 
-    /// A world of spheres and CSG (intersections and differences of boxes and spheres),
-    /// for comparing queries that must agree.
     /// A node's box passes every ray the node can stop: 200 turned tiles (a box
     /// and a sphere intersected, or the box less the sphere) in a tree of leaves of
     /// several, rays aimed at points on their boxes' sides, edges and corners and just
@@ -1596,6 +1594,7 @@ mod tests {
                 }
             }
             let origin = DVec3::new(next(), next(), next()) * 80.0 - 40.0;
+            // Unnormalised: a shadow query up to t = 1 ends at the aimed point.
             let ray = Ray::new(origin, aim - origin);
             let key = |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.primitive, h.flipped));
             let hit = key(world.intersect(&ray, f64::INFINITY, 0));
@@ -1614,6 +1613,8 @@ mod tests {
         assert!(met > 5_000, "too few rays met anything ({met})");
     }
 
+    /// A world of spheres and CSG (intersections and differences of boxes and spheres),
+    /// for comparing queries that must agree.
     fn csg_cloud() -> (World, impl FnMut() -> f64) {
         let mut next = crate::geometry::uniform_stream(0x9e37_79b9_7f4a_7c15);
         let mut b = WorldBuilder::default();
