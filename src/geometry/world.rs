@@ -106,9 +106,10 @@ struct CsgNode {
     /// (a quartic, a poly): its convex children's spans narrow that search
     /// ([`World::kept_window`]). Elsewhere finding the spans would only double the work.
     windowed: bool,
-    /// Whether a ray must meet [`World::csg_boxes`]' box for the node to be searched: a
-    /// bounded node but one whose box a list walk has tested already.
-    boxed: bool,
+    /// The box a ray must meet for the node to be searched ([`World::csg_meets`]): its
+    /// extent rounded outward to single precision, as the tree's boxes are. None where the
+    /// node is unbounded, or a list walk has just tested the same box.
+    own_box: Option<NodeBox>,
 }
 
 /// Past this many children a CSG node indexes them by their boxes, so that a ray or a
@@ -227,9 +228,6 @@ pub struct World {
     /// instructions for a dodecahedron's twelve), and the builds ask for a node's extent
     /// several times (the tree's items, its parent's).
     csg_extents: Vec<Aabb>,
-    /// Per CSG node, its extent rounded outward to single precision as the tree's boxes
-    /// are, which a ray must meet for the node to be searched ([`World::csg_meets`]).
-    csg_boxes: Vec<NodeBox>,
     bvh: Bvh,
     unbounded: Vec<u32>,
     /// The unbounded items' extents (infinite on some sides), for shafts
@@ -289,7 +287,7 @@ impl WorldBuilder {
             inverse,
             index: None,
             windowed: false,
-            boxed: false,
+            own_box: None,
         });
         Item((self.csg.len() - 1) as u32 | CSG_BIT)
     }
@@ -319,7 +317,6 @@ impl WorldBuilder {
             tables: self.tables,
             csg: self.csg,
             csg_extents: Vec::new(),
-            csg_boxes: Vec::new(),
             bvh: Bvh::default(),
             unbounded: Vec::new(),
             unbounded_extents: Vec::new(),
@@ -333,9 +330,8 @@ impl WorldBuilder {
             let extent = world.csg_extent(&world.csg[k]);
             world.csg_extents.push(extent);
         }
-        world.csg_boxes = world.csg_extents.iter().map(NodeBox::enclosing).collect();
         for (node, extent) in world.csg.iter_mut().zip(&world.csg_extents) {
-            node.boxed = extent.bounded().is_some();
+            node.own_box = extent.bounded().map(|b| NodeBox::enclosing(&b));
         }
         world.index_csg_children();
         world.photon_targets = self
@@ -351,7 +347,7 @@ impl WorldBuilder {
         if world.bvh.walks_as_list() {
             for item in &self.top {
                 if let Ref::Csg(k) = decode(item.0) {
-                    world.csg[k].boxed = false;
+                    world.csg[k].own_box = None;
                 }
             }
         }
@@ -653,7 +649,6 @@ impl World {
             + self.transforms.capacity() * size_of::<Transform>()
             + self.csg.capacity() * size_of::<CsgNode>()
             + self.csg_extents.capacity() * size_of::<Aabb>()
-            + self.csg_boxes.capacity() * size_of::<NodeBox>()
             + self
                 .csg
                 .iter()
@@ -936,11 +931,9 @@ impl World {
     /// the tree passes to the node that can cross it.
     #[inline]
     fn csg_meets(&self, k: usize, ray: &Ray, t_max: f64) -> bool {
-        !self.csg[k].boxed
-            || self.csg_boxes[k]
-                .aabb()
-                .hit(ray, ray.direction.recip(), t_max)
-                .is_some()
+        self.csg[k]
+            .own_box
+            .is_none_or(|b| b.aabb().hit(ray, ray.direction.recip(), t_max).is_some())
     }
 
     /// The part of `within` where a crossing of an intersection or a clip can be kept:
@@ -1574,13 +1567,13 @@ mod tests {
         }
         let world = b.build();
         assert!(!world.bvh.walks_as_list());
-        assert!(world.csg.iter().all(|n| n.boxed));
+        assert!(world.csg.iter().all(|n| n.own_box.is_some()));
         let mut unboxed = world.clone();
-        unboxed.csg.iter_mut().for_each(|n| n.boxed = false);
+        unboxed.csg.iter_mut().for_each(|n| n.own_box = None);
         let mut met = 0;
         for k in 0..30_000 {
             let node = k % world.csg.len();
-            let b = world.csg_boxes[node].aabb();
+            let b = world.csg[node].own_box.expect("bounded").aabb();
             // A point on a side, an edge or a corner of the box, or a hair outside one.
             let mut aim = b.min + (b.max - b.min) * DVec3::new(next(), next(), next());
             for axis in 0..3 {
