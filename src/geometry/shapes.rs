@@ -266,6 +266,7 @@ impl ShapeKind {
     /// [`ShapeKind::each_hit_part`], but the shapes that search the whole line for their
     /// crossings (quartics, polys) search only `within` (the caller keeps only crossings
     /// there).
+    #[inline]
     pub fn each_hit_part_within(
         &self,
         ray: &Ray,
@@ -460,12 +461,37 @@ impl ShapeKind {
         }
     }
 
+    /// Whether [`ShapeKind::crossings`] finds the shape's crossings: in increasing order,
+    /// each searched for only when the one before is taken.
+    #[inline]
+    pub fn finds_crossings_in_order(&self) -> bool {
+        matches!(
+            self,
+            ShapeKind::Superellipsoid(_)
+                | ShapeKind::Blob(_)
+                | ShapeKind::Isosurface(_)
+                | ShapeKind::Julia(_)
+        )
+    }
+
     /// The crossings of shapes that find them in increasing order, until `f` says stop.
-    fn crossings(&self, ray: &Ray, tables: &ShapeTables, f: impl FnMut(f64) -> bool) {
+    pub fn crossings(&self, ray: &Ray, tables: &ShapeTables, f: impl FnMut(f64) -> bool) {
+        self.crossings_from(ray, tables, f64::NEG_INFINITY, f);
+    }
+
+    /// [`ShapeKind::crossings`] from `t_min` on (some, isosurfaces, searching no further
+    /// back).
+    pub fn crossings_from(
+        &self,
+        ray: &Ray,
+        tables: &ShapeTables,
+        t_min: f64,
+        f: impl FnMut(f64) -> bool,
+    ) {
         match *self {
+            ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].hits_from(ray, t_min, f),
             ShapeKind::Superellipsoid(s) => s.each_hit(ray, f),
             ShapeKind::Blob(i) => tables.blobs[i as usize].each_hit(ray, f),
-            ShapeKind::Isosurface(i) => tables.isosurfaces[i as usize].each_hit(ray, f),
             ShapeKind::Julia(i) => tables.julias[i as usize].each_hit(ray, f),
             _ => {}
         }

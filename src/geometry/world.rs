@@ -863,6 +863,9 @@ impl World {
         f: &mut dyn FnMut(Hit),
     ) {
         let node = match decode(item) {
+            Ref::Primitive(i) if self.primitives[i].shape.finds_crossings_in_order() => {
+                return self.ordered_hits(i, ray, within, skip, reach, f);
+            }
             Ref::Primitive(i) => return self.primitive_hits(i, ray, within, skip, f),
             Ref::Instance(k) => {
                 return self.instances[k].for_each_hit(k as u32, ray, within.1, skip, f);
@@ -976,6 +979,7 @@ impl World {
     }
 
     /// The crossings of a primitive within (lo, hi) (lo at least 0).
+    #[inline(never)]
     fn primitive_hits(
         &self,
         i: usize,
@@ -1005,6 +1009,41 @@ impl World {
                 }
             },
         );
+    }
+
+    /// [`World::primitive_hits`] of a shape that searches for its crossings in order
+    /// ([`ShapeKind::finds_crossings_in_order`]), which stops at `reach`
+    /// ([`World::for_each_hit`]): a nearest-hit query through a CSG node wants none
+    /// beyond the nearest found (stackergold's isosurfaces, met ahead of a ray, had their
+    /// far side searched through the whole container).
+    #[inline(never)]
+    fn ordered_hits(
+        &self,
+        i: usize,
+        ray: &Ray,
+        (lo, hi): (f64, f64),
+        skip: u8,
+        reach: &Cell<f64>,
+        f: &mut dyn FnMut(Hit),
+    ) {
+        let p = &self.primitives[i];
+        if p.flags & skip != 0 {
+            return;
+        }
+        let flipped = p.flags & flags::INVERSE != 0;
+        p.shape
+            .crossings_from(&self.local_ray(p, ray), &self.tables, lo, |t| {
+                if t > lo && t < hi {
+                    f(Hit {
+                        t,
+                        primitive: i as u32,
+                        part: 0,
+                        flipped,
+                        instance: NO_INSTANCE,
+                    });
+                }
+                t < hi && t < reach.get()
+            });
     }
 
     /// Whether a hit at `p` on the child at `i` is on the node's surface, from where `p`
@@ -1667,6 +1706,121 @@ mod tests {
             met += usize::from(hit.is_some());
         }
         assert!(met > 500, "too few rays met anything ({met})");
+    }
+
+    /// Differences and intersections of an isosurface ring (a shape that searches for its
+    /// crossings in order, stopping where asked) with spheres. The nearest hit stops the
+    /// isosurface's search at the nearest kept crossing; it is the nearest of all the
+    /// crossings, to the bit, also where the ray's first crossings of the ring are not
+    /// kept (a ray through both sides of the ring, the near one in a subtracted sphere),
+    /// and from points on the surfaces (secondary rays); and a shadow query finds a
+    /// blocker where there is a crossing. It fails if the search stops at the first
+    /// crossing ahead whether kept or not.
+    #[test]
+    fn an_ordered_search_stops_at_the_nearest_kept_crossing() {
+        use crate::function::{Expr, Internal, compile};
+        let (major, minor) = (Expr::Const(0.8), Expr::Const(0.35));
+        let args = vec![Expr::Arg(0), Expr::Arg(1), Expr::Arg(2), major, minor];
+        let function = compile(&Expr::Internal(Internal::Torus, args), 3).expect("compiles");
+        let mut b = WorldBuilder::default();
+        b.tables.isosurfaces.push(super::super::IsoData {
+            function: Arc::new(function),
+            container: super::super::Container::Box {
+                min: DVec3::splat(-1.2),
+                max: DVec3::splat(1.2),
+            },
+            threshold: 0.0,
+            accuracy: 0.001,
+            max_gradient: 1.1,
+            open: false,
+            steepest: Default::default(),
+            origin: "test".into(),
+        });
+        let mut next = crate::geometry::uniform_stream(0x0dd5_ea7c_4e55_1e55);
+        let mut centres = Vec::new();
+        for k in 0..24 {
+            let c = DVec3::new(next(), next(), next()) * 16.0 - 8.0;
+            centres.push(c);
+            let place = Transform::scale(DVec3::splat(0.8 + next()))
+                .expect("invertible")
+                .then(&Transform::translate(c));
+            let ring = b.primitive(ShapeKind::Isosurface(0), &place, 0, 0);
+            let dent = b.primitive(
+                ShapeKind::Sphere {
+                    center: c + DVec3::new(next(), next(), next()) - 0.5,
+                    radius: 0.4 + next(),
+                },
+                &Transform::IDENTITY,
+                0,
+                0,
+            );
+            let node = if k % 2 == 0 {
+                b.csg(CsgOp::Difference, vec![ring, dent], false)
+            } else {
+                b.csg(CsgOp::Intersection, vec![ring, dent], false)
+            };
+            b.add_top(node);
+        }
+        let world = b.build();
+        let mut met = 0;
+        let near_a_ring = |next: &mut dyn FnMut() -> f64| {
+            let c = centres[(next() * centres.len() as f64) as usize % centres.len()];
+            c + DVec3::new(next(), next(), next()) * 3.0 - 1.5
+        };
+        for k in 0..3000 {
+            let aim = near_a_ring(&mut next);
+            let mut origin = DVec3::new(next(), next(), next()) * 30.0 - 15.0;
+            if let Some(hit) = world.intersect(&Ray::new(origin, aim - origin), f64::INFINITY, 0) {
+                // Every other ray leaves a surface, as reflected and shadow rays do.
+                if k % 2 == 0 {
+                    origin += (aim - origin) * hit.t;
+                }
+            }
+            let ray = Ray::new(origin, near_a_ring(&mut next) - origin);
+            let nearest = nearest_kept(&world, &ray);
+            let hit = world.intersect(&ray, f64::INFINITY, 0).map(|h| h.t);
+            assert_eq!(hit, (nearest < f64::INFINITY).then_some(nearest), "{ray:?}");
+            let near = Ray::new(ray.origin, ray.direction * 3.0);
+            let mut crossed = false;
+            world.crossings(&near, 1.0, 0, &mut |_| {
+                crossed = true;
+                false
+            });
+            assert_eq!(world.blocker(&near, 1.0).is_some(), crossed, "{near:?}");
+            met += usize::from(hit.is_some());
+        }
+        assert!(met > 400, "too few rays met anything ({met})");
+    }
+
+    /// The nearest crossing ahead of the ray kept by its node, from every crossing of
+    /// every child (the isosurface's searched from the ray's origin on, as the world's
+    /// are, so that its roots are the same to the bit).
+    fn nearest_kept(world: &World, ray: &Ray) -> f64 {
+        let mut best = f64::INFINITY;
+        for node in &world.csg {
+            for (i, &c) in node.children.iter().enumerate() {
+                let Ref::Primitive(j) = decode(c) else {
+                    panic!("a node of primitives");
+                };
+                let p = &world.primitives[j];
+                let local = world.local_ray(p, ray);
+                let mut keep = |t: f64| {
+                    if t > 0.0 && t < best && world.kept(node, i, ray.at(t)) {
+                        best = t;
+                    }
+                };
+                match p.shape {
+                    ShapeKind::Isosurface(k) => {
+                        world.tables.isosurfaces[k as usize].hits_from(&local, 0.0, |t| {
+                            keep(t);
+                            true
+                        });
+                    }
+                    shape => shape.each_hit(&local, &world.tables, keep),
+                }
+            }
+        }
+        best
     }
 
     /// A quartic clipped by a cylinder and two planes (shapesq.inc's helix), an
