@@ -266,7 +266,6 @@ impl ShapeKind {
     /// [`ShapeKind::each_hit_part`], but the shapes that search the whole line for their
     /// crossings (quartics, polys) search only `within` (the caller keeps only crossings
     /// there).
-    #[inline]
     pub fn each_hit_part_within(
         &self,
         ray: &Ray,

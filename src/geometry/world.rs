@@ -979,7 +979,6 @@ impl World {
     }
 
     /// The crossings of a primitive within (lo, hi) (lo at least 0).
-    #[inline(never)]
     fn primitive_hits(
         &self,
         i: usize,
