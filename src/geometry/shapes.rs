@@ -460,8 +460,8 @@ impl ShapeKind {
         }
     }
 
-    /// Whether [`ShapeKind::crossings`] finds the shape's crossings: in increasing order,
-    /// each searched for only when the one before is taken.
+    /// Whether [`ShapeKind::crossings_from`] finds the shape's crossings: in increasing
+    /// order, each searched for only when the one before is taken.
     #[inline]
     pub fn finds_crossings_in_order(&self) -> bool {
         matches!(
@@ -474,7 +474,7 @@ impl ShapeKind {
     }
 
     /// The crossings of shapes that find them in increasing order, until `f` says stop.
-    pub fn crossings(&self, ray: &Ray, tables: &ShapeTables, f: impl FnMut(f64) -> bool) {
+    fn crossings(&self, ray: &Ray, tables: &ShapeTables, f: impl FnMut(f64) -> bool) {
         self.crossings_from(ray, tables, f64::NEG_INFINITY, f);
     }
 

@@ -1014,7 +1014,8 @@ impl World {
     /// ([`ShapeKind::finds_crossings_in_order`]), which stops at `reach`
     /// ([`World::for_each_hit`]): a nearest-hit query through a CSG node wants none
     /// beyond the nearest found (stackergold's isosurfaces, met ahead of a ray, had their
-    /// far side searched through the whole container).
+    /// far side searched through the whole container). Out of line, so that the common
+    /// primitives' path through [`World::for_each_hit`] stays as it was.
     #[inline(never)]
     fn ordered_hits(
         &self,
