@@ -478,8 +478,8 @@ impl ShapeKind {
         self.crossings_from(ray, tables, f64::NEG_INFINITY, f);
     }
 
-    /// [`ShapeKind::crossings`] from `t_min` on (some, isosurfaces, searching no further
-    /// back).
+    /// The crossings of shapes that find them in increasing order, from `t_min` on (some,
+    /// isosurfaces, searching no further back), until `f` says stop.
     pub fn crossings_from(
         &self,
         ray: &Ray,
