@@ -6,7 +6,8 @@
 //! the norm g^(1/p_z) from either end of the ray's span in the unit cube reach without
 //! passing them. Otherwise (e or n above 2, the pinched stars) the span is narrowed to a
 //! convex shape around the star, cut where it crosses the coordinate planes, each piece is
-//! sampled, and sign changes and dips between samples are refined. Grazing rays near a
+//! halved where bounds on g do not rule out a crossing, and sign changes and dips in the
+//! smallest parts are refined. Grazing rays near a
 //! tangency find the minimum itself, so they neither miss the surface nor see holes.
 
 use glam::DVec3;
@@ -33,8 +34,19 @@ pub struct Superellipsoid {
 /// leaving the surface starts on it only up to the root's error.
 const DEPTH_TOLERANCE: f64 = 1e-7;
 
-/// Samples per piece of the ray for the non-convex shapes.
-const SAMPLES: usize = 24;
+/// Halvings of a piece of the ray for the non-convex shapes: where bounds do not rule
+/// out a crossing, intervals of 1/32 of the piece are searched, finer than the 24 samples
+/// a piece took before (superel3: 13% fewer instructions with 1/64, 17% with 1/32, 21%
+/// with 1/16; all three byte-identical images at 80x60).
+const DEPTH: u32 = 5;
+
+/// A part of the ray's piece, g - 1 at its ends and how many halvings made it.
+#[derive(Clone, Copy, Debug, Default)]
+struct Interval {
+    t: (f64, f64),
+    f: (f64, f64),
+    depth: u32,
+}
 
 impl Superellipsoid {
     /// From POV-Ray's `<e, n>`; exponents are clamped away from zero as a box is the limit.
@@ -228,7 +240,7 @@ impl Superellipsoid {
         cuts[n] = t1;
         cuts[..=n].sort_by(f64::total_cmp);
         for w in cuts[..=n].windows(2) {
-            if !self.sampled_hits(ray, w[0], w[1], &mut keep) {
+            if !self.bounded_hits(ray, w[0], w[1], &mut keep) {
                 return;
             }
         }
@@ -334,47 +346,87 @@ impl Superellipsoid {
         Some(t)
     }
 
-    /// Roots in [a, b] (a smooth piece) from samples: sign changes, and dips below zero
-    /// between samples found by searching the sampled minimum. False when `f` stopped.
-    fn sampled_hits(&self, ray: &Ray, a: f64, b: f64, f: &mut impl FnMut(f64) -> bool) -> bool {
-        let step = (b - a) / SAMPLES as f64;
-        let at = |i: usize| if i == SAMPLES { b } else { a + step * i as f64 };
-        let mut values = [0.0; SAMPLES + 1];
-        for (i, v) in values.iter_mut().enumerate() {
-            *v = self.along(ray, at(i));
-        }
-        for i in 0..SAMPLES {
-            let (v0, v1) = (values[i], values[i + 1]);
-            if (v0 <= 0.0) != (v1 <= 0.0) {
-                if !f(self.root(ray, at(i), at(i + 1), v0)) {
+    /// Roots in [a, b] (a piece of the line where no coordinate changes sign), nearest
+    /// first, by halving: g rises with each of |x|, |y| and |z|, which over an interval of
+    /// the piece are linear in t, so g at the least (greatest) of each at the interval's
+    /// ends bounds it from below (above). An interval both of whose ends lie outside is
+    /// dropped where the lower bound is outside too, and one inside where the upper bound
+    /// is; the rest are halved down to `1 / 2^DEPTH` of the piece and searched there as
+    /// [`Superellipsoid::interval_hits`] does. False when `f` stopped.
+    fn bounded_hits(&self, ray: &Ray, a: f64, b: f64, f: &mut impl FnMut(f64) -> bool) -> bool {
+        // Depth first, nearest on top: at most one pending interval per level.
+        let mut stack = [Interval::default(); DEPTH as usize + 2];
+        stack[0] = Interval {
+            t: (a, b),
+            f: (self.along(ray, a), self.along(ray, b)),
+            depth: 0,
+        };
+        let mut n = 1;
+        while n > 0 {
+            n -= 1;
+            let i = stack[n];
+            if self.without_crossing(ray, &i) {
+                continue;
+            }
+            if i.depth == DEPTH {
+                if !self.interval_hits(ray, &i, f) {
                     return false;
                 }
                 continue;
             }
-            if v0 <= 0.0 {
-                continue;
-            }
-            // Both outside: a dip below zero between them shows as a falling-then-rising
-            // slope next to a sampled local minimum; search the minimum there.
-            let low = |k: usize| {
-                (k == 0 || values[k] <= values[k - 1])
-                    && (k == SAMPLES || values[k] <= values[k + 1])
+            let tm = 0.5 * (i.t.0 + i.t.1);
+            let fm = self.along(ray, tm);
+            let depth = i.depth + 1;
+            stack[n] = Interval {
+                t: (tm, i.t.1),
+                f: (fm, i.f.1),
+                depth,
             };
-            if (low(i) || low(i + 1))
-                && self.slope(ray, at(i)) < 0.0
-                && self.slope(ray, at(i + 1)) > 0.0
-            {
-                let m = self.slope_root(ray, at(i), at(i + 1));
-                let fm = self.along(ray, m);
-                if fm < 0.0 {
-                    if !f(self.root(ray, at(i), m, v0)) {
-                        return false;
-                    }
-                    if !f(self.root(ray, m, at(i + 1), fm)) {
-                        return false;
-                    }
-                }
-            }
+            stack[n + 1] = Interval {
+                t: (i.t.0, tm),
+                f: (i.f.0, fm),
+                depth,
+            };
+            n += 2;
+        }
+        true
+    }
+
+    /// Whether g's bounds over the interval ([`Superellipsoid::bounded_hits`]) keep it on
+    /// its ends' side throughout. Each coordinate's least magnitude is lowered by a
+    /// rounding margin: a piece's ends lie on the coordinate planes only to rounding.
+    fn without_crossing(&self, ray: &Ray, i: &Interval) -> bool {
+        let (outside, inside) = (i.f.0 > 0.0 && i.f.1 > 0.0, i.f.0 <= 0.0 && i.f.1 <= 0.0);
+        if !outside && !inside {
+            return false;
+        }
+        let (pa, pb) = (ray.at(i.t.0).abs(), ray.at(i.t.1).abs());
+        if outside {
+            let least = (pa.min(pb) - DVec3::splat(1e-12)).max(DVec3::ZERO);
+            self.value(least) > 0.0
+        } else {
+            self.value(pa.max(pb)) <= 0.0
+        }
+    }
+
+    /// Roots in an interval of the smallest size: a sign change between its ends, or,
+    /// with both ends outside, a dip below zero between them (the slope falling then
+    /// rising), found by searching the minimum. False when `f` stopped.
+    fn interval_hits(&self, ray: &Ray, i: &Interval, f: &mut impl FnMut(f64) -> bool) -> bool {
+        let ((a, b), (fa, fb)) = (i.t, i.f);
+        let root = |lo: f64, hi: f64, flo: f64, fhi: f64| {
+            illinois(|t| self.along(ray, t), lo, hi, flo, fhi, 1e-13)
+        };
+        if (fa <= 0.0) != (fb <= 0.0) {
+            return f(root(a, b, fa, fb));
+        }
+        if fa <= 0.0 || self.slope(ray, a) >= 0.0 || self.slope(ray, b) <= 0.0 {
+            return true;
+        }
+        let m = self.slope_root(ray, a, b);
+        let fm = self.along(ray, m);
+        if fm < 0.0 {
+            return f(root(a, m, fa, fm)) && f(root(m, b, fm, fb));
         }
         true
     }
@@ -625,6 +677,41 @@ mod tests {
             checked > 1400 && crossings > 1000,
             "{checked} rays, {crossings} crossings"
         );
+    }
+
+    /// Within a piece of a line (no coordinate changing sign), g at every point of an
+    /// interval lies between its values at the least and the greatest magnitudes of the
+    /// interval's ends: the bounds the pinched shapes' search drops intervals by.
+    #[test]
+    fn g_lies_between_its_bounds_over_an_interval() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_pcg::Pcg64::seed_from_u64(9);
+        let mut checked = 0;
+        for _ in 0..20_000 {
+            let s = Superellipsoid::new(rng.random_range(0.1..4.0), rng.random_range(0.1..4.0));
+            let mut v = || {
+                DVec3::new(
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                )
+            };
+            let (a, b) = (v(), v());
+            if (a * b).min_element() < 0.0 {
+                continue; // a coordinate changes sign between them
+            }
+            let (lo, hi) = (s.value(a.abs().min(b.abs())), s.value(a.abs().max(b.abs())));
+            for k in 0..=16 {
+                let g = s.value(a.lerp(b, f64::from(k) / 16.0));
+                let slack = 1e-12 * (1.0 + g.abs());
+                assert!(
+                    lo <= g + slack && g <= hi + slack,
+                    "{s:?} {a} {b}: {lo} {g} {hi}"
+                );
+            }
+            checked += 1;
+        }
+        assert!(checked > 2_000, "{checked}");
     }
 
     /// The pinched shapes lie within the convex hull their search is narrowed to.
