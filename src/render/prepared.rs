@@ -35,7 +35,10 @@ impl GammaDecode {
         let c = c.max(0.0);
         match self {
             GammaDecode::Srgb => crate::output::srgb::decode(c),
-            GammaDecode::Power(g) => c.powf(g),
+            // 2^(g log2 c): a sample decodes three channels, and `powf` took 13% of
+            // incdemo/stones/pinkmarb's instructions (240 a call against 90); the relative
+            // error, about |g log2 c| 2^-52, is 1e-14 at c = 10^-6.
+            GammaDecode::Power(g) => (g * c.log2()).exp2(),
         }
     }
 }
@@ -1076,4 +1079,26 @@ fn polygon(points: &[DVec3]) -> Option<(PolygonData, Transform)> {
         },
         frame,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::GammaDecode;
+
+    /// The decode through logarithms is the power to about |g log2 c| roundings, over the
+    /// values a traced sample takes (negative ones clamp to 0).
+    #[test]
+    fn a_power_decode_is_the_power() {
+        for g in [0.45, 1.5, 1.8, 2.2, 2.5] {
+            let mut c = 1e-8;
+            while c < 1e4 {
+                let (got, want) = (GammaDecode::Power(g).decode(c), c.powf(g));
+                let bound = (g * c.log2()).abs().max(1.0) * 4.0 * f64::EPSILON;
+                assert!((got / want - 1.0).abs() <= bound, "{g} {c}: {got} {want}");
+                c *= 1.37;
+            }
+            assert_eq!(GammaDecode::Power(g).decode(0.0), 0.0);
+            assert_eq!(GammaDecode::Power(g).decode(-0.3), 0.0);
+        }
+    }
 }
