@@ -113,7 +113,7 @@ impl HeightFieldData {
             }
         }
         let max_height = heights.iter().fold(0.0f32, |a, &h| a.max(h)) as f64;
-        let field = HeightFieldData {
+        Some(HeightFieldData {
             nx,
             nz,
             heights,
@@ -124,8 +124,7 @@ impl HeightFieldData {
             water_level,
             smooth,
             normals: NormalCache::new(if smooth { nx * nz } else { 0 }),
-        };
-        Some(field)
+        })
     }
 
     /// The heights' box, from y = 0, which the inside reaches down to.

@@ -7,8 +7,8 @@
 //! passing them. Otherwise (e or n above 2, the pinched stars) the span is narrowed to a
 //! convex shape around the star, cut where it crosses the coordinate planes, each piece is
 //! halved where bounds on g do not rule out a crossing, and sign changes and dips in the
-//! smallest parts are refined. Grazing rays near a
-//! tangency find the minimum itself, so they neither miss the surface nor see holes.
+//! smallest parts are refined. Grazing rays near a tangency find the minimum itself, so
+//! they neither miss the surface nor see holes.
 
 use glam::DVec3;
 
@@ -679,6 +679,16 @@ mod tests {
         );
     }
 
+    /// A point uniform in the shapes' cube [-1, 1]^3.
+    fn point_in_cube(rng: &mut rand_pcg::Pcg64) -> DVec3 {
+        use rand::RngExt;
+        DVec3::new(
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+        )
+    }
+
     /// Within a piece of a line (no coordinate changing sign), g at every point of an
     /// interval lies between its values at the least and the greatest magnitudes of the
     /// interval's ends: the bounds the pinched shapes' search drops intervals by.
@@ -689,14 +699,7 @@ mod tests {
         let mut checked = 0;
         for _ in 0..20_000 {
             let s = Superellipsoid::new(rng.random_range(0.1..4.0), rng.random_range(0.1..4.0));
-            let mut v = || {
-                DVec3::new(
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-1.0..1.0),
-                )
-            };
-            let (a, b) = (v(), v());
+            let (a, b) = (point_in_cube(&mut rng), point_in_cube(&mut rng));
             if (a * b).min_element() < 0.0 {
                 continue; // a coordinate changes sign between them
             }
@@ -723,11 +726,7 @@ mod tests {
         for _ in 0..100_000 {
             let s = Superellipsoid::new(rng.random_range(0.1..4.0), rng.random_range(0.1..4.0));
             let hull = s.hull();
-            let q = DVec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
+            let q = point_in_cube(&mut rng);
             if s.value(q) <= 0.0 {
                 inside += 1;
                 assert!(hull.value(q) <= 1e-12, "{s:?} {q}");
