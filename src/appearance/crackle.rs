@@ -10,6 +10,8 @@
 //! the points themselves are penumbra's own hash, so crackle agrees with POV-Ray in
 //! distribution, as the noise patterns do.
 
+use std::cell::RefCell;
+
 use glam::DVec3;
 
 use super::noise::{lattice_hash, noise_with};
@@ -38,29 +40,52 @@ fn distance(d: DVec3, metric: f64) -> f64 {
     (a.x.powf(metric) + a.y.powf(metric) + a.z.powf(metric)).powf(1.0 / metric)
 }
 
+/// The random points of the 27 cubes around one cube, in the order the search visits them.
+struct Neighbourhood {
+    /// The cube's corner, when `points` holds its neighbourhood.
+    cell: Option<[i64; 3]>,
+    points: [DVec3; 27],
+}
+
+thread_local! {
+    /// The neighbourhood of the last cube searched, per thread: successive evaluations (a
+    /// normal's four samples, neighbouring shading points) mostly fall in one cube, and
+    /// hashing its 27 points was most of an evaluation's work. POV-Ray keeps such a cache.
+    static NEIGHBOURHOOD: RefCell<Neighbourhood> = const {
+        RefCell::new(Neighbourhood {
+            cell: None,
+            points: [DVec3::ZERO; 27],
+        })
+    };
+}
+
 /// The three nearest distances among the 27 cubes around `p`, and the nearest point.
 fn nearest_three(p: DVec3, metric: f64) -> ([f64; 3], DVec3) {
     let base = p.floor();
-    let mut d = [f64::INFINITY; 3];
-    let mut nearest = p;
-    for i in -1..=1 {
-        for j in -1..=1 {
-            for k in -1..=1 {
-                let cell = [base.x as i64 + i, base.y as i64 + j, base.z as i64 + k];
-                let q = cell_point(cell);
-                let r = distance(p - q, metric);
-                if r < d[0] {
-                    nearest = q;
-                    d = [r, d[0], d[1]];
-                } else if r < d[1] {
-                    d = [d[0], r, d[1]];
-                } else if r < d[2] {
-                    d[2] = r;
-                }
+    let cell = [base.x as i64, base.y as i64, base.z as i64];
+    NEIGHBOURHOOD.with_borrow_mut(|near| {
+        if near.cell != Some(cell) {
+            near.points = std::array::from_fn(|n| {
+                let (i, j, k) = (n as i64 / 9 - 1, n as i64 / 3 % 3 - 1, n as i64 % 3 - 1);
+                cell_point([cell[0] + i, cell[1] + j, cell[2] + k])
+            });
+            near.cell = Some(cell);
+        }
+        let mut d = [f64::INFINITY; 3];
+        let mut nearest = p;
+        for &q in &near.points {
+            let r = distance(p - q, metric);
+            if r < d[0] {
+                nearest = q;
+                d = [r, d[0], d[1]];
+            } else if r < d[1] {
+                d = [d[0], r, d[1]];
+            } else if r < d[2] {
+                d[2] = r;
             }
         }
-    }
-    (d, nearest)
+        (d, nearest)
+    })
 }
 
 pub fn crackle_value(c: &Crackle, p: DVec3, generator: u8) -> f64 {
@@ -90,6 +115,44 @@ mod tests {
             let f = |k: u32| f64::from(super::super::noise::hash(i as u32 * 3 + k)) / 2f64.powi(32);
             DVec3::new(f(0), f(1), f(2)) * 40.0 - 20.0
         })
+    }
+
+    /// The kept neighbourhood gives what searching the 27 cubes afresh gives, bit for
+    /// bit, whether successive points share a cube or go back to the one before, in two
+    /// threads at once.
+    #[test]
+    fn kept_neighbourhoods_give_the_fresh_search() {
+        let fresh = |p: DVec3| {
+            let base = p.floor();
+            let mut all = Vec::new();
+            for i in -1..=1 {
+                for j in -1..=1 {
+                    for k in -1..=1 {
+                        let cell = [base.x as i64 + i, base.y as i64 + j, base.z as i64 + k];
+                        all.push(distance(p - cell_point(cell), 2.0));
+                    }
+                }
+            }
+            all.sort_by(f64::total_cmp);
+            [all[0], all[1], all[2]]
+        };
+        let check = |scale: f64| {
+            let (mut shared, mut previous) = (0, DVec3::ZERO);
+            for p in points(3000).map(|p| p * scale) {
+                // A point, one beside it (mostly in its cube), then back to the cube before.
+                let near = p + DVec3::splat(0.01);
+                shared += usize::from(near.floor() == p.floor());
+                for q in [p, near, previous] {
+                    assert_eq!(nearest_three(q, 2.0).0, fresh(q), "{q}");
+                }
+                previous = p;
+            }
+            assert!(shared > 2_800, "{shared}");
+        };
+        std::thread::scope(|s| {
+            s.spawn(|| check(1.0));
+            s.spawn(|| check(-0.3));
+        });
     }
 
     #[test]
