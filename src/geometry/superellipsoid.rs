@@ -679,6 +679,13 @@ mod tests {
         );
     }
 
+    /// A shape with each exponent's parameter uniform in [0.1, 4): pinched ones (above 2)
+    /// and convex ones alike.
+    fn random_shape(rng: &mut rand_pcg::Pcg64) -> Superellipsoid {
+        use rand::RngExt;
+        Superellipsoid::new(rng.random_range(0.1..4.0), rng.random_range(0.1..4.0))
+    }
+
     /// A point uniform in the shapes' cube [-1, 1]^3.
     fn point_in_cube(rng: &mut rand_pcg::Pcg64) -> DVec3 {
         use rand::RngExt;
@@ -694,11 +701,11 @@ mod tests {
     /// interval's ends: the bounds the pinched shapes' search drops intervals by.
     #[test]
     fn g_lies_between_its_bounds_over_an_interval() {
-        use rand::{RngExt, SeedableRng};
+        use rand::SeedableRng;
         let mut rng = rand_pcg::Pcg64::seed_from_u64(9);
         let mut checked = 0;
         for _ in 0..20_000 {
-            let s = Superellipsoid::new(rng.random_range(0.1..4.0), rng.random_range(0.1..4.0));
+            let s = random_shape(&mut rng);
             let (a, b) = (point_in_cube(&mut rng), point_in_cube(&mut rng));
             if (a * b).min_element() < 0.0 {
                 continue; // a coordinate changes sign between them
@@ -720,11 +727,11 @@ mod tests {
     /// The pinched shapes lie within the convex hull their search is narrowed to.
     #[test]
     fn pinched_shapes_lie_within_their_hull() {
-        use rand::{RngExt, SeedableRng};
+        use rand::SeedableRng;
         let mut rng = rand_pcg::Pcg64::seed_from_u64(8);
         let mut inside = 0;
         for _ in 0..100_000 {
-            let s = Superellipsoid::new(rng.random_range(0.1..4.0), rng.random_range(0.1..4.0));
+            let s = random_shape(&mut rng);
             let hull = s.hull();
             let q = point_in_cube(&mut rng);
             if s.value(q) <= 0.0 {
