@@ -145,15 +145,15 @@ pub fn roots_until(coef: &[f64], lo: f64, hi: f64, mut take: impl FnMut(f64) -> 
     let start = coef.iter().position(|&c| c != 0.0).unwrap_or(coef.len());
     let coef = &coef[start..];
     debug_assert!(coef.len() <= 5, "degree above 4");
-    if coef.len() <= 4 {
+    let Ok(quartic) = <&[f64; 5]>::try_from(coef) else {
         cubic_until(coef, lo, hi, take);
         return;
-    }
+    };
     // A quartic: its critical points (the cubic derivative's roots) arrive in increasing
     // order and each monotone piece is searched as soon as its end is known, so a ray
     // stopping at its first crossing has the critical points beyond it never found.
     let derivative = derivative_of::<4>(coef);
-    let mut walk = MonotoneWalk::new(coef, lo);
+    let mut walk = MonotoneWalk::new(quartic, lo);
     if cubic_until(&derivative, lo, hi, |c| walk.critical(c, &mut take)) {
         walk.finish(hi, &mut take);
     }
@@ -162,24 +162,20 @@ pub fn roots_until(coef: &[f64], lo: f64, hi: f64, mut take: impl FnMut(f64) -> 
 /// [`roots_until`] for a polynomial of degree at most 3 without leading zeros; false when
 /// `take` asked to stop.
 fn cubic_until(coef: &[f64], lo: f64, hi: f64, mut take: impl FnMut(f64) -> bool) -> bool {
-    let degree = coef.len().saturating_sub(1);
-    if degree == 0 {
-        return true;
-    }
-    if degree <= 2 {
-        let r = if degree == 2 {
-            quadratic(coef[0], coef[1], coef[2])
-        } else {
-            quadratic(0.0, coef[0], coef[1])
+    let Ok(cubic) = <&[f64; 4]>::try_from(coef) else {
+        let r = match *coef {
+            [a, b, c] => quadratic(a, b, c),
+            [b, c] => quadratic(0.0, b, c),
+            _ => return true,
         };
         return r
             .as_slice()
             .iter()
             .all(|&t| !(t >= lo && t <= hi) || take(t));
-    }
+    };
     let derivative = derivative_of::<3>(coef);
     let critical = quadratic(derivative[0], derivative[1], derivative[2]);
-    let mut walk = MonotoneWalk::new(coef, lo);
+    let mut walk = MonotoneWalk::new(cubic, lo);
     for &c in critical.as_slice() {
         if c >= lo && c <= hi && !walk.critical(c, &mut take) {
             return false;
@@ -235,36 +231,55 @@ pub fn roots_in_wide(coef: &[f64], lo: f64, hi: f64) -> WideRoots {
     }
     let derivative = &derivative[..degree];
     let critical = roots_in_wide(derivative, lo, hi);
-    monotone_roots(coef, (lo, hi), critical.as_slice(), |t| {
+    let mut push = |t| {
         out.push(t);
         true
-    });
+    };
+    let range = (lo, hi);
+    let _ = pieces_of::<6>(coef, range, critical.as_slice(), &mut push)
+        || pieces_of::<7>(coef, range, critical.as_slice(), &mut push)
+        || pieces_of::<8>(coef, range, critical.as_slice(), &mut push);
     out
+}
+
+/// [`monotone_roots`] for a polynomial of `N` coefficients (written for each length, as
+/// the search's sums then unroll); false, doing nothing, for another length.
+fn pieces_of<const N: usize>(
+    coef: &[f64],
+    range: (f64, f64),
+    critical: &[f64],
+    push: &mut impl FnMut(f64) -> bool,
+) -> bool {
+    let Ok(coef) = <&[f64; N]>::try_from(coef) else {
+        return false;
+    };
+    monotone_roots(coef, range, critical, push);
+    true
 }
 
 /// The roots in [lo, hi] of a polynomial whose sorted critical points there are `critical`:
 /// one per monotone piece between them, in increasing order, a root shared by two pieces
 /// given once, until `push` returns false.
-fn monotone_roots(
-    coef: &[f64],
+fn monotone_roots<const N: usize>(
+    coef: &[f64; N],
     (lo, hi): (f64, f64),
     critical: &[f64],
-    mut push: impl FnMut(f64) -> bool,
+    push: &mut impl FnMut(f64) -> bool,
 ) {
     let mut walk = MonotoneWalk::new(coef, lo);
     for &c in critical {
-        if !walk.critical(c, &mut push) {
+        if !walk.critical(c, push) {
             return;
         }
     }
-    walk.finish(hi, &mut push);
+    walk.finish(hi, push);
 }
 
 /// A polynomial's monotone pieces searched in increasing order as its critical points
 /// arrive: the piece a critical point closes is solved before the next one is looked for,
 /// and the value at a piece's end is the next piece's start.
-struct MonotoneWalk<'a> {
-    coef: &'a [f64],
+struct MonotoneWalk<'a, const N: usize> {
+    coef: &'a [f64; N],
     /// The open piece's start and the polynomial's value there.
     a: f64,
     fa: f64,
@@ -272,8 +287,8 @@ struct MonotoneWalk<'a> {
     last: Option<f64>,
 }
 
-impl<'a> MonotoneWalk<'a> {
-    fn new(coef: &'a [f64], lo: f64) -> Self {
+impl<'a, const N: usize> MonotoneWalk<'a, N> {
+    fn new(coef: &'a [f64; N], lo: f64) -> Self {
         MonotoneWalk {
             coef,
             a: lo,
@@ -325,8 +340,8 @@ impl<'a> MonotoneWalk<'a> {
 /// where Laguerre's, which read the curvature too, take 2 to 4. The search stops where the
 /// value is within its rounding error ([`rounding_error`]): past that the sign is
 /// rounding's, and the steps wandered inside the noise.
-fn monotone_root(
-    coef: &[f64],
+fn monotone_root<const N: usize>(
+    coef: &[f64; N],
     (mut a, mut fa): (f64, f64),
     (mut b, fb): (f64, f64),
 ) -> Option<f64> {
