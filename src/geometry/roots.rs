@@ -351,7 +351,9 @@ fn monotone_root<const N: usize>(
     if fb == 0.0 {
         return Some(b);
     }
-    if fa.signum() == fb.signum() {
+    // Signs compared by `< 0` (no value compared is 0; a NaN counts as positive), cheaper
+    // than `signum`'s NaN test.
+    if (fa < 0.0) == (fb < 0.0) {
         return None;
     }
     // An end where the value is within its own rounding error is the root: the sign
@@ -368,7 +370,7 @@ fn monotone_root<const N: usize>(
     for _ in 0..100 {
         let step = laguerre_step(coef, degree, t, f);
         // Towards the end whose sign differs from f's.
-        let mut next = if f.signum() == fa.signum() {
+        let mut next = if (f < 0.0) == (fa < 0.0) {
             t + step
         } else {
             t - step
@@ -382,7 +384,7 @@ fn monotone_root<const N: usize>(
         if f.abs() <= rounding_error(coef, t) {
             return Some(t);
         }
-        if f.signum() == fa.signum() {
+        if (f < 0.0) == (fa < 0.0) {
             (a, fa) = (t, f);
         } else {
             b = t;
