@@ -653,6 +653,7 @@ mod tests {
                 p = product;
             }
             let bound = root_bound(&p);
+            assert!(real.iter().all(|r| r.abs() < bound), "{bound} for {real:?}");
             let got = roots_in(&p, -bound, bound);
             assert_eq!(got.as_slice().len(), real.len(), "{got:?} for {real:?}");
             for (&t, &want) in got.as_slice().iter().zip(&real) {
@@ -669,8 +670,8 @@ mod tests {
     }
 
     /// Fujiwara's bound with roots taken only where they may raise it is the bound with
-    /// every root taken (by `powf`), to the last bits the cube root may differ in, and
-    /// holds every root.
+    /// every root taken (by `powf`), to the last bits the cube root may differ in (that it
+    /// holds every root, the test above checks).
     #[test]
     fn root_bound_is_fujiwaras() {
         let mut next = crate::geometry::uniform_stream(9);
