@@ -184,6 +184,72 @@ fn cubic_until(coef: &[f64], lo: f64, hi: f64, mut take: impl FnMut(f64) -> bool
     walk.finish(hi, &mut take)
 }
 
+/// C(i, k) / C(n, k) for degree n up to 4: the weights that turn the power basis on
+/// [0, 1] into Bernstein coefficients.
+const BERNSTEIN: [[[f64; 5]; 5]; 5] = {
+    let mut t = [[[0.0; 5]; 5]; 5];
+    let mut n = 0;
+    while n < 5 {
+        let mut i = 0;
+        while i <= n {
+            let mut k = 0;
+            while k <= i {
+                t[n][i][k] = binomial(i, k) / binomial(n, k);
+                k += 1;
+            }
+            i += 1;
+        }
+        n += 1;
+    }
+    t
+};
+
+const fn binomial(n: usize, k: usize) -> f64 {
+    let (mut c, mut j) = (1.0, 0);
+    while j < k {
+        c = c * (n - j) as f64 / (j + 1) as f64;
+        j += 1;
+    }
+    c
+}
+
+/// Whether the polynomial (`N` coefficients, highest first, degree at most 4) is certainly
+/// of one sign over [lo, hi] (finite), by a margin wider than any rounding of its values:
+/// then the search would find no sign change there either. The test is the signs of the
+/// Bernstein coefficients over the interval (every value there is their weighted mean),
+/// about 60 operations where the search costs hundreds. It pays where most intervals hold
+/// no root (a blob's ray meets many spheres of influence and crosses the surface in few of
+/// them); tried before every quartic and cubic search it cost more than it saved (prism3c
+/// +5.6%, sor1 +1.6%, partorus +1.2% instructions; lathe2 -2.7%).
+pub fn keeps_sign<const N: usize>(coef: &[f64; N], lo: f64, hi: f64) -> bool {
+    let width = hi - lo;
+    if !(width.is_finite() && lo.is_finite() && (2..=5).contains(&N)) {
+        return false;
+    }
+    // Ascending coefficients of p(lo + width s).
+    let mut a: [f64; N] = std::array::from_fn(|k| coef[N - 1 - k]);
+    for i in 0..N - 1 {
+        for j in (i..N - 1).rev() {
+            a[j] += lo * a[j + 1];
+        }
+    }
+    let mut scale = 1.0;
+    for x in a.iter_mut() {
+        *x *= scale;
+        scale *= width;
+    }
+    let reach = lo.abs().max(hi.abs());
+    let margin = 1024.0 * f64::EPSILON * coef.iter().fold(0.0, |acc, &c| acc * reach + c.abs());
+    let (mut positive, mut negative) = (true, true);
+    for (i, weights) in BERNSTEIN[N - 1].iter().enumerate().take(N) {
+        // b_i = the sum over k <= i of C(i, k) / C(n, k) a_k.
+        let b = (0..=i).fold(0.0, |b, k| b + weights[k] * a[k]);
+        positive &= b > margin;
+        negative &= b < -margin;
+    }
+    positive || negative
+}
+
 /// The derivative's coefficients of a polynomial of degree `N` (highest first).
 fn derivative_of<const N: usize>(coef: &[f64]) -> [f64; N] {
     std::array::from_fn(|i| coef[i] * (N - i) as f64)
@@ -667,6 +733,54 @@ mod tests {
             }
         }
         assert!(found > 4000, "{found} roots");
+    }
+
+    /// The sign test over an interval: never where a root lies inside, and where it holds,
+    /// the values across the interval keep that sign; it holds over most root-free
+    /// intervals of quartics and cubics of known roots (two complex when the degree is 4).
+    #[test]
+    fn keeps_sign_only_where_no_root_lies() {
+        let mut next = crate::geometry::uniform_stream(13);
+        let (mut held, mut free) = (0, 0);
+        for case in 0..4000 {
+            let real: Vec<f64> = (0..3).map(|_| 8.0 * next() - 4.0).collect();
+            let p = if case % 2 == 0 {
+                from_roots(&real)
+            } else {
+                // (t - r0)(t - r1)(t^2 + 1): a quartic with two real roots.
+                let mut q = from_roots(&real[..2]);
+                q.push(0.0);
+                q.push(0.0);
+                for i in (2..q.len()).rev() {
+                    q[i] += q[i - 2];
+                }
+                q
+            };
+            let (lo, hi) = (8.0 * next() - 4.0, 8.0 * next() - 4.0);
+            let (lo, hi) = (lo.min(hi), lo.max(hi));
+            let holds = match p.len() {
+                4 => keeps_sign(&<[f64; 4]>::try_from(p.as_slice()).unwrap(), lo, hi),
+                _ => keeps_sign(&<[f64; 5]>::try_from(p.as_slice()).unwrap(), lo, hi),
+            };
+            let rootless = real
+                .iter()
+                .take(if p.len() == 4 { 3 } else { 2 })
+                .all(|r| *r < lo || *r > hi);
+            free += usize::from(rootless);
+            if holds {
+                assert!(rootless, "{p:?} over [{lo}, {hi}]");
+                let sign = eval(&p, lo) > 0.0;
+                for k in 0..=32 {
+                    let t = lo + (hi - lo) * f64::from(k) / 32.0;
+                    assert_eq!(eval(&p, t) > 0.0, sign, "{p:?} at {t}");
+                }
+                held += 1;
+            }
+        }
+        assert!(
+            held * 2 > free,
+            "held over {held} of {free} root-free intervals"
+        );
     }
 
     /// Fujiwara's bound with roots taken only where they may raise it is the bound with
