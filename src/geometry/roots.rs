@@ -238,8 +238,9 @@ pub fn keeps_sign<const N: usize>(coef: &[f64; N], lo: f64, hi: f64) -> bool {
         *x *= scale;
         scale *= width;
     }
-    let reach = lo.abs().max(hi.abs());
-    let margin = 1024.0 * f64::EPSILON * coef.iter().fold(0.0, |acc, &c| acc * reach + c.abs());
+    // Wider than the values' rounding anywhere in the interval ([`rounding_error`] at its
+    // far end bounds it) and than the coefficients' own here.
+    let margin = 128.0 * rounding_error(coef, lo.abs().max(hi.abs()));
     let (mut positive, mut negative) = (true, true);
     for (i, weights) in BERNSTEIN[N - 1].iter().enumerate().take(N) {
         // b_i = the sum over k <= i of C(i, k) / C(n, k) a_k.
